@@ -85,7 +85,19 @@ struct WeftHair {
     float3 sin2k;
     int _pad5_0;
     float3 cos2k;
+    int _pad6_0;
+    float3 inv_v;
+    int _pad7_0;
+    float3 mp_norm;
+    int _pad8_0;
+    float2 blur;
+    float r_floor;
+    int _pad10_0;
+    float4 trt;
+    float trt4_;
     int _end_pad_0;
+    int _end_pad_1;
+    int _end_pad_2;
 };
 
 struct WeftHairLobes {
@@ -103,6 +115,20 @@ struct WeftHairAngles {
     int _end_pad_0;
     int _end_pad_1;
     int _end_pad_2;
+};
+
+struct HairVaryings {
+    float4 clip_position : SV_Position;
+    float3 world_position : LOC0;
+    float3 world_normal : LOC1;
+    float4 world_tangent : LOC2;
+    float2 uv0_ : LOC3;
+    nointerpolation float4 fibre : LOC4;
+    nointerpolation float4 sin2k : LOC5;
+    nointerpolation float4 cos2k : LOC6;
+    nointerpolation float4 mp_norm : LOC7;
+    nointerpolation float4 inv_v : LOC8;
+    nointerpolation float4 trt : LOC9;
 };
 
 static const float WEFT_PI = 3.1415927;
@@ -130,11 +156,17 @@ Texture2D<float4> base_map : register(t3, space1);
 Texture2D<float4> jitter_map : register(t5, space1);
 Texture2D<float4> uv_rotate_mask : register(t6, space1);
 
-struct VertexOutput_vs_main {
+struct VertexOutput_vs_hair {
     float3 world_position_2 : LOC0;
     float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_2 : LOC3;
+    nointerpolation float4 fibre : LOC4;
+    nointerpolation float4 sin2k : LOC5;
+    nointerpolation float4 cos2k : LOC6;
+    nointerpolation float4 mp_norm : LOC7;
+    nointerpolation float4 inv_v : LOC8;
+    nointerpolation float4 trt : LOC9;
     float4 clip_position : SV_Position;
 };
 
@@ -143,6 +175,12 @@ struct FragmentInput_fs_main {
     float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_3 : LOC3;
+    nointerpolation float4 fibre_1 : LOC4;
+    nointerpolation float4 sin2k_1 : LOC5;
+    nointerpolation float4 cos2k_1 : LOC6;
+    nointerpolation float4 mp_norm_1 : LOC7;
+    nointerpolation float4 inv_v_1 : LOC8;
+    nointerpolation float4 trt_1 : LOC9;
     float4 clip_position_1 : SV_Position;
 };
 
@@ -305,12 +343,17 @@ float weft_hair_logistic_scale(float beta_n)
     return (0.62665707 * (((0.265 * b_4) + (1.194 * b2_1)) + (5.372 * b22_)));
 }
 
-float3 weft_hair_sigma_a_from_color(float3 c, float beta_n_1)
+float3 weft_hair_sigma_a_scaled(float3 c, float scale_1)
+{
+    float3 l = (log(clamp(c, (0.0001).xxx, (1.0).xxx)) * scale_1);
+    return (l * l);
+}
+
+float weft_hair_sigma_a_scale(float beta_n_1)
 {
     float b_5 = clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1.0);
     float d = (((((5.969 - (0.215 * b_5)) + ((2.532 * b_5) * b_5)) - (10.73 * pow(b_5, 3.0))) + (5.574 * pow(b_5, 4.0))) + (0.245 * pow(b_5, 5.0)));
-    float3 l = (log(clamp(c, (0.0001).xxx, (1.0).xxx)) / (d).xxx);
-    return (l * l);
+    return (1.0 / d);
 }
 
 WeftHair weft_hair_params(float3 sigma_a, float eta_1, float beta_m_1, float beta_n_2, float alpha_deg)
@@ -332,8 +375,24 @@ WeftHair weft_hair_params(float3 sigma_a, float eta_1, float beta_m_1, float bet
     float c2_ = ((c1_ * c1_) - (s1_ * s1_));
     hair.sin2k = float3(s0_, s1_, s2_);
     hair.cos2k = float3(_e29, c1_, c2_);
-    WeftHair _e46 = hair;
-    const WeftHair wefthair = _e46;
+    hair.inv_v = (float3(1.0, 4.0, 0.25) / (_e13).xxx);
+    float _e55 = hair.inv_v.x;
+    float e_trt = exp((-0.5 * _e55));
+    const float _e60 = weft_hair_sqr((e_trt * e_trt));
+    float3 _e63 = hair.inv_v;
+    const float _e67 = weft_hair_sqr((_e60 * _e60));
+    hair.mp_norm = (_e63 / ((1.0).xxx - float3(_e60, _e67, e_trt)));
+    float _e73 = hair.s;
+    float d_1 = (0.8162094 * _e73);
+    hair.blur = float2(sin(d_1), cos(d_1));
+    float _e81 = hair.s;
+    const float _e84 = weft_hair_sqr((0.4534 * _e81));
+    hair.r_floor = _e84;
+    float sh_1 = hair.s;
+    hair.trt = float4((-9.2609 + (sh_1 * (65.993 - (107.38 * sh_1)))), (72.357 + (sh_1 * (-624.68 + (1069.8 * sh_1)))), (-153.75 + (sh_1 * (1704.7 - (3127.5 * sh_1)))), (-67.745 + (sh_1 * (-1105.8 + (2706.6 * sh_1)))));
+    hair.trt4_ = (239.74 - (430.94 * sh_1));
+    WeftHair _e122 = hair;
+    const WeftHair wefthair = _e122;
     return wefthair;
 }
 
@@ -404,49 +463,68 @@ WeftHairLobes weft_hair_fast(WeftHair hair_1, float3 t_1, float3 o_1, float3 i_1
     float sin_half_1 = sqrt((0.5 - (0.5 * cos_phi_1)));
     float3 so = float3(((sin_o_1 * hair_1.cos2k.y) - (_e15 * hair_1.sin2k.y)), ((sin_o_1 * hair_1.cos2k.x) + (_e15 * hair_1.sin2k.x)), ((sin_o_1 * hair_1.cos2k.z) + (_e15 * hair_1.sin2k.z)));
     float3 co = abs(float3(((_e15 * hair_1.cos2k.y) + (sin_o_1 * hair_1.sin2k.y)), ((_e15 * hair_1.cos2k.x) - (sin_o_1 * hair_1.sin2k.x)), ((_e15 * hair_1.cos2k.z) - (sin_o_1 * hair_1.sin2k.z))));
-    float3 inv_v = (float3(1.0, 4.0, 0.25) / (hair_1.v.x).xxx);
-    float e_trt = exp((-0.5 * inv_v.x));
-    const float _e107 = weft_hair_sqr((e_trt * e_trt));
-    const float _e111 = weft_hair_sqr((_e107 * _e107));
-    float3 norm = (inv_v / ((1.0).xxx - float3(_e107, _e111, e_trt)));
-    float3 x_6 = ((_e19 * co) * inv_v);
+    float3 inv_v_2 = hair_1.inv_v;
+    float3 norm = hair_1.mp_norm;
+    float3 x_6 = ((_e19 * co) * inv_v_2);
     float3 u = ((1.0).xxx / ((1.0).xxx + (0.7 * x_6)));
     float3 bessel = (((1.0).xxx + ((u * ((1.0).xxx - u)) * ((0.181903).xxx + (u * ((-0.401835).xxx + (u * 3.1851)))))) * rsqrt(((1.0).xxx + (6.2831855 * x_6))));
-    float3 mp = ((exp(min(((((_e19 * co) - (sin_i_1 * so)) - (1.0).xxx) * inv_v), (0.0).xxx)) * bessel) * norm);
+    float3 mp = ((exp(min(((((_e19 * co) - (sin_i_1 * so)) - (1.0).xxx) * inv_v_2), (0.0).xxx)) * bessel) * norm);
     float sin_t = (sin_o_1 / hair_1.eta);
-    const float _e167 = weft_hair_safe_sqrt((1.0 - (sin_t * sin_t)));
-    float chord_1 = (2.0 / max(_e167, 0.0001));
+    const float _e148 = weft_hair_safe_sqrt((1.0 - (sin_t * sin_t)));
+    float chord_1 = (2.0 / max(_e148, 0.0001));
     float a_5 = (_e15 * rsqrt(max(((hair_1.eta * hair_1.eta) - (sin_o_1 * sin_o_1)), 1e-8)));
-    float d_1 = (0.8162094 * hair_1.s);
-    float sd = sin(d_1);
-    float cd = cos(d_1);
-    const float _e193 = weft_hair_sqr((0.4534 * hair_1.s));
-    float c_r = sqrt(min(((0.5 + (0.5 * cos_phi_1)) + _e193), 1.0));
-    const float _e202 = weft_f_dielectric((_e15 * c_r), hair_1.eta);
-    float r = ((0.25 * c_r) * _e202);
-    const float3 _e212 = weft_hair_fast_tt(((sin_half_1 * cd) + (cos_half * sd)), ((sin_half_1 * cd) - (cos_half * sd)), a_5, _e15, hair_1.eta, hair_1.sigma_a, chord_1);
+    float sd = hair_1.blur.x;
+    float cd = hair_1.blur.y;
+    float c_r = sqrt(min(((0.5 + (0.5 * cos_phi_1)) + hair_1.r_floor), 1.0));
+    const float _e179 = weft_f_dielectric((_e15 * c_r), hair_1.eta);
+    float r = ((0.25 * c_r) * _e179);
+    const float3 _e189 = weft_hair_fast_tt(((sin_half_1 * cd) + (cos_half * sd)), ((sin_half_1 * cd) - (cos_half * sd)), a_5, _e15, hair_1.eta, hair_1.sigma_a, chord_1);
     float h_f = (0.6243 + (0.1898 * _e15));
-    const float _e220 = weft_hair_safe_sqrt((1.0 - (h_f * h_f)));
-    const float _e223 = weft_f_dielectric((_e15 * _e220), hair_1.eta);
+    const float _e197 = weft_hair_safe_sqrt((1.0 - (h_f * h_f)));
+    const float _e200 = weft_f_dielectric((_e15 * _e197), hair_1.eta);
     float h2_ = (0.4824 + (0.2778 * _e15));
-    const float _e231 = weft_hair_safe_sqrt((1.0 - (h2_ * h2_)));
-    const float _e234 = weft_f_dielectric((_e15 * _e231), hair_1.eta);
-    const float _e242 = weft_hair_safe_sqrt((1.0 - (((h2_ * h2_) * a_5) * a_5)));
-    float3 t2_ = exp((-(hair_1.sigma_a) * (chord_1 * _e242)));
-    const float _e248 = weft_hair_sqr((1.0 - _e234));
-    float3 a2_ = (((_e248 * _e234) * t2_) * t2_);
-    float3 ft = (_e223 * t2_);
+    const float _e208 = weft_hair_safe_sqrt((1.0 - (h2_ * h2_)));
+    const float _e211 = weft_f_dielectric((_e15 * _e208), hair_1.eta);
+    const float _e219 = weft_hair_safe_sqrt((1.0 - (((h2_ * h2_) * a_5) * a_5)));
+    float3 t2_ = exp((-(hair_1.sigma_a) * (chord_1 * _e219)));
+    const float _e225 = weft_hair_sqr((1.0 - _e211));
+    float3 a2_ = (((_e225 * _e211) * t2_) * t2_);
+    float3 ft = (_e200 * t2_);
     float3 a3_ = ((a2_ * ft) / ((1.0).xxx - ft));
-    float s2_fit = ((-9.2609 + (a_5 * (72.357 + (a_5 * (-153.75 + (a_5 * (-67.745 + (a_5 * 239.74)))))))) + (hair_1.s * ((65.993 + (a_5 * (-624.68 + (a_5 * (1704.7 + (a_5 * (-1105.8 - (a_5 * 430.94)))))))) + (hair_1.s * (-107.38 + (a_5 * (1069.8 + (a_5 * (-3127.5 + (a_5 * 2706.6))))))))));
+    float s2_fit = (hair_1.trt.x + (a_5 * (hair_1.trt.y + (a_5 * (hair_1.trt.z + (a_5 * (hair_1.trt.w + (a_5 * hair_1.trt4_))))))));
     float s_trt = sqrt(max(exp(clamp(s2_fit, -9.0, 2.5)), (hair_1.s * hair_1.s)));
-    const float _e310 = weft_hair_trimmed_logistic(acos(cos_phi_1), s_trt);
-    out_2.s = ((((mp.x * r)).xxx + (mp.y * _e212)) + (mp.z * ((a2_ * _e310) + (a3_ * 0.15915494))));
-    out_2.back = ((_e223).xxx + a2_);
-    const float _e332 = weft_hair_sqr((1.0 - _e234));
-    out_2.albedo = ((((_e223).xxx + (_e332 * t2_)) + a2_) + a3_);
-    WeftHairLobes _e338 = out_2;
-    const WeftHairLobes wefthairlobes = _e338;
+    const float _e262 = weft_hair_trimmed_logistic(acos(cos_phi_1), s_trt);
+    out_2.s = ((((mp.x * r)).xxx + (mp.y * _e189)) + (mp.z * ((a2_ * _e262) + (a3_ * 0.15915494))));
+    out_2.back = ((_e200).xxx + a2_);
+    const float _e284 = weft_hair_sqr((1.0 - _e211));
+    out_2.albedo = ((((_e200).xxx + (_e284 * t2_)) + a2_) + a3_);
+    WeftHairLobes _e290 = out_2;
+    const WeftHairLobes wefthairlobes = _e290;
     return wefthairlobes;
+}
+
+WeftHair ConstructWeftHair(float3 arg0, float arg1, float4 arg2, float arg3, float3 arg4, float3 arg5, float3 arg6, float3 arg7, float2 arg8, float arg9, float4 arg10, float arg11) {
+    WeftHair ret = (WeftHair)0;
+    ret.sigma_a = arg0;
+    ret.eta = arg1;
+    ret.v = arg2;
+    ret.s = arg3;
+    ret.sin2k = arg4;
+    ret.cos2k = arg5;
+    ret.inv_v = arg6;
+    ret.mp_norm = arg7;
+    ret.blur = arg8;
+    ret.r_floor = arg9;
+    ret.trt = arg10;
+    ret.trt4_ = arg11;
+    return ret;
+}
+
+WeftHair hair_from_varyings(HairVaryings in_3, float3 sigma_a_2)
+{
+    float v_1 = in_3.fibre.z;
+    const WeftHair wefthair_1 = ConstructWeftHair(max(sigma_a_2, (0.0).xxx), in_3.fibre.x, float4(v_1, (0.25 * v_1), (4.0 * v_1), (4.0 * v_1)), in_3.fibre.y, in_3.sin2k.xyz, in_3.cos2k.xyz, in_3.inv_v.xyz, in_3.mp_norm.xyz, float2(in_3.cos2k.w, in_3.mp_norm.w), in_3.sin2k.w, float4(in_3.inv_v.w, in_3.trt.xyz), in_3.trt.w);
+    return wefthair_1;
 }
 
 float3 hair_strand(float3x3 frame, float2 uv0_)
@@ -507,17 +585,61 @@ float hair_jitter(float2 uv0_1)
     return ((_e46 * j) + (_e50 * _e58));
 }
 
-VertexOutput_vs_main vs_main(WeftVertexInput in_)
+HairVaryings ConstructHairVaryings(float4 arg0, float3 arg1, float3 arg2, float4 arg3, float2 arg4, float4 arg5, float4 arg6, float4 arg7, float4 arg8, float4 arg9, float4 arg10) {
+    HairVaryings ret = (HairVaryings)0;
+    ret.clip_position = arg0;
+    ret.world_position = arg1;
+    ret.world_normal = arg2;
+    ret.world_tangent = arg3;
+    ret.uv0_ = arg4;
+    ret.fibre = arg5;
+    ret.sin2k = arg6;
+    ret.cos2k = arg7;
+    ret.mp_norm = arg8;
+    ret.inv_v = arg9;
+    ret.trt = arg10;
+    return ret;
+}
+
+VertexOutput_vs_hair vs_hair(WeftVertexInput in_)
 {
+    WeftHair h = (WeftHair)0;
+    float scale = 0.0;
+
     const WeftVaryings _e1 = weft_forward_vertex(in_);
-    const WeftVaryings weftvaryings_1 = _e1;
-    const VertexOutput_vs_main weftvaryings_1_ = { weftvaryings_1.world_position, weftvaryings_1.world_normal, weftvaryings_1.world_tangent, weftvaryings_1.uv0_, weftvaryings_1.clip_position };
-    return weftvaryings_1_;
+    float _e6 = material.ior;
+    float _e9 = material.roughness;
+    float _e12 = material.azimuthal_roughness;
+    float _e15 = material.scale_angle;
+    const WeftHair _e16 = weft_hair_params((0.0).xxx, _e6, _e9, _e12, _e15);
+    h = _e16;
+    {
+        float _e22 = material.azimuthal_roughness;
+        const float _e23 = weft_hair_sigma_a_scale(_e22);
+        scale = _e23;
+    }
+    float _e30 = h.eta;
+    float _e32 = h.s;
+    float _e35 = h.v.x;
+    float _e36 = scale;
+    float3 _e39 = h.sin2k;
+    float _e41 = h.r_floor;
+    float3 _e44 = h.cos2k;
+    float _e47 = h.blur.x;
+    float3 _e50 = h.mp_norm;
+    float _e53 = h.blur.y;
+    float3 _e56 = h.inv_v;
+    float _e59 = h.trt.x;
+    float4 _e62 = h.trt;
+    float _e65 = h.trt4_;
+    const HairVaryings hairvaryings = ConstructHairVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, float4(_e30, _e32, _e35, _e36), float4(_e39, _e41), float4(_e44, _e47), float4(_e50, _e53), float4(_e56, _e59), float4(_e62.yzw, _e65));
+    const VertexOutput_vs_hair hairvaryings_1 = { hairvaryings.world_position, hairvaryings.world_normal, hairvaryings.world_tangent, hairvaryings.uv0_, hairvaryings.fibre, hairvaryings.sin2k, hairvaryings.cos2k, hairvaryings.mp_norm, hairvaryings.inv_v, hairvaryings.trt, hairvaryings.clip_position };
+    return hairvaryings_1;
 }
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_3 };
+    HairVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_3, fragmentinput_fs_main.fibre_1, fragmentinput_fs_main.sin2k_1, fragmentinput_fs_main.cos2k_1, fragmentinput_fs_main.mp_norm_1, fragmentinput_fs_main.inv_v_1, fragmentinput_fs_main.trt_1 };
     float3 color = (float3)0;
     WeftHairLobes lobes = (WeftHairLobes)0;
 
@@ -529,7 +651,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 base = saturate(base_rgba.xyz);
     float alpha = saturate(base_rgba.w);
     const WeftSurface _e19 = weft_surface(in_1.world_position, in_1.world_normal);
-    float3 v_1 = _e19.v;
+    float3 v_2 = _e19.v;
     float3 n_3 = _e19.n;
     const float3x3 _e23 = weft_tangent_frame(n_3, in_1.world_tangent);
     const float3 _e25 = hair_strand(_e23, in_1.uv0_);
@@ -540,27 +662,22 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float n_dot_l = dot(n_3, _e28);
     {
         const float3 _e35 = weft_safe_normalize((_e25 + (_e27 * n_3)), _e25);
-        float _e38 = material.azimuthal_roughness;
-        const float3 _e39 = weft_hair_sigma_a_from_color(base, _e38);
-        float _e42 = material.ior;
-        float _e45 = material.roughness;
-        float _e48 = material.azimuthal_roughness;
-        float _e51 = material.scale_angle;
-        const WeftHair _e52 = weft_hair_params(_e39, _e42, _e45, _e48, _e51);
-        const WeftHairAngles _e53 = weft_hair_angles(_e35, v_1, _e28);
+        const float3 _e38 = weft_hair_sigma_a_scaled(base, in_1.fibre.w);
+        const WeftHair _e39 = hair_from_varyings(in_1, _e38);
+        const WeftHairAngles _e40 = weft_hair_angles(_e35, v_2, _e28);
         {
-            const WeftHairLobes _e55 = weft_hair_fast(_e52, _e35, v_1, _e28);
-            lobes = _e55;
+            const WeftHairLobes _e42 = weft_hair_fast(_e39, _e35, v_2, _e28);
+            lobes = _e42;
         }
         float body = smoothstep(-0.25, HAIR_TERMINATOR, n_dot_l);
+        float3 _e49 = lobes.back;
+        float3 multiple = (base * ((1.0).xxx - _e49));
+        float3 _e53 = lobes.s;
+        float3 direct = ((_e53 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
         float3 _e62 = lobes.back;
-        float3 multiple = (base * ((1.0).xxx - _e62));
-        float3 _e66 = lobes.s;
-        float3 direct = ((_e66 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
-        float3 _e75 = lobes.back;
-        color = ((direct * _e29) + (_e30 * (multiple + _e75)));
+        color = ((direct * _e29) + (_e30 * (multiple + _e62)));
     }
-    float3 _e79 = color;
-    float3 radiance = clamp(_e79, (0.0).xxx, (65504.0).xxx);
+    float3 _e66 = color;
+    float3 radiance = clamp(_e66, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

@@ -86,6 +86,12 @@ struct WeftHair {
     s: f32,
     sin2k: vec3<f32>,
     cos2k: vec3<f32>,
+    inv_v: vec3<f32>,
+    mp_norm: vec3<f32>,
+    blur: vec2<f32>,
+    r_floor: f32,
+    trt: vec4<f32>,
+    trt4_: f32,
 }
 
 struct WeftHairLobes {
@@ -97,6 +103,20 @@ struct WeftHairLobes {
 struct WeftHairAngles {
     theta: vec4<f32>,
     phi: f32,
+}
+
+struct HairVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+    @location(0) world_position: vec3<f32>,
+    @location(1) world_normal: vec3<f32>,
+    @location(2) world_tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+    @location(4) @interpolate(flat) fibre: vec4<f32>,
+    @location(5) @interpolate(flat) sin2k: vec4<f32>,
+    @location(6) @interpolate(flat) cos2k: vec4<f32>,
+    @location(7) @interpolate(flat) mp_norm: vec4<f32>,
+    @location(8) @interpolate(flat) inv_v: vec4<f32>,
+    @location(9) @interpolate(flat) trt: vec4<f32>,
 }
 
 const WEFT_PI: f32 = 3.1415927f;
@@ -263,11 +283,15 @@ fn weft_hair_logistic_scale(beta_n: f32) -> f32 {
     return (0.62665707f * (((0.265f * b_4) + (1.194f * b2_1)) + (5.372f * b22_)));
 }
 
-fn weft_hair_sigma_a_from_color(c: vec3<f32>, beta_n_1: f32) -> vec3<f32> {
+fn weft_hair_sigma_a_scaled(c: vec3<f32>, scale_1: f32) -> vec3<f32> {
+    let l = (log(clamp(c, vec3(0.0001f), vec3(1f))) * scale_1);
+    return (l * l);
+}
+
+fn weft_hair_sigma_a_scale(beta_n_1: f32) -> f32 {
     let b_5 = clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1f);
     let d = (((((5.969f - (0.215f * b_5)) + ((2.532f * b_5) * b_5)) - (10.73f * pow(b_5, 3f))) + (5.574f * pow(b_5, 4f))) + (0.245f * pow(b_5, 5f)));
-    let l = (log(clamp(c, vec3(0.0001f), vec3(1f))) / vec3(d));
-    return (l * l);
+    return (1f / d);
 }
 
 fn weft_hair_params(sigma_a: vec3<f32>, eta_1: f32, beta_m_1: f32, beta_n_2: f32, alpha_deg: f32) -> WeftHair {
@@ -288,8 +312,24 @@ fn weft_hair_params(sigma_a: vec3<f32>, eta_1: f32, beta_m_1: f32, beta_n_2: f32
     let c2_ = ((c1_ * c1_) - (s1_ * s1_));
     hair.sin2k = vec3<f32>(s0_, s1_, s2_);
     hair.cos2k = vec3<f32>(_e29, c1_, c2_);
-    let _e46 = hair;
-    return _e46;
+    hair.inv_v = (vec3<f32>(1f, 4f, 0.25f) / vec3(_e13));
+    let _e55 = hair.inv_v.x;
+    let e_trt = exp((-0.5f * _e55));
+    let _e60 = weft_hair_sqr((e_trt * e_trt));
+    let _e63 = hair.inv_v;
+    let _e67 = weft_hair_sqr((_e60 * _e60));
+    hair.mp_norm = (_e63 / (vec3(1f) - vec3<f32>(_e60, _e67, e_trt)));
+    let _e73 = hair.s;
+    let d_1 = (0.8162094f * _e73);
+    hair.blur = vec2<f32>(sin(d_1), cos(d_1));
+    let _e81 = hair.s;
+    let _e84 = weft_hair_sqr((0.4534f * _e81));
+    hair.r_floor = _e84;
+    let sh_1 = hair.s;
+    hair.trt = vec4<f32>((-9.2609f + (sh_1 * (65.993f - (107.38f * sh_1)))), (72.357f + (sh_1 * (-624.68f + (1069.8f * sh_1)))), (-153.75f + (sh_1 * (1704.7f - (3127.5f * sh_1)))), (-67.745f + (sh_1 * (-1105.8f + (2706.6f * sh_1)))));
+    hair.trt4_ = (239.74f - (430.94f * sh_1));
+    let _e122 = hair;
+    return _e122;
 }
 
 fn weft_hair_logistic(x_2: f32, s: f32) -> f32 {
@@ -352,48 +392,48 @@ fn weft_hair_fast(hair_1: WeftHair, t_1: vec3<f32>, o_1: vec3<f32>, i_1: vec3<f3
     let sin_half_1 = sqrt((0.5f - (0.5f * cos_phi_1)));
     let so = vec3<f32>(((sin_o_1 * hair_1.cos2k.y) - (_e15 * hair_1.sin2k.y)), ((sin_o_1 * hair_1.cos2k.x) + (_e15 * hair_1.sin2k.x)), ((sin_o_1 * hair_1.cos2k.z) + (_e15 * hair_1.sin2k.z)));
     let co = abs(vec3<f32>(((_e15 * hair_1.cos2k.y) + (sin_o_1 * hair_1.sin2k.y)), ((_e15 * hair_1.cos2k.x) - (sin_o_1 * hair_1.sin2k.x)), ((_e15 * hair_1.cos2k.z) - (sin_o_1 * hair_1.sin2k.z))));
-    let inv_v = (vec3<f32>(1f, 4f, 0.25f) / vec3(hair_1.v.x));
-    let e_trt = exp((-0.5f * inv_v.x));
-    let _e107 = weft_hair_sqr((e_trt * e_trt));
-    let _e111 = weft_hair_sqr((_e107 * _e107));
-    let norm = (inv_v / (vec3(1f) - vec3<f32>(_e107, _e111, e_trt)));
+    let inv_v = hair_1.inv_v;
+    let norm = hair_1.mp_norm;
     let x_6 = ((_e19 * co) * inv_v);
     let u = (vec3(1f) / (vec3(1f) + (0.7f * x_6)));
     let bessel = ((vec3(1f) + ((u * (vec3(1f) - u)) * (vec3(0.181903f) + (u * (vec3(-0.401835f) + (u * 3.1851f)))))) * inverseSqrt((vec3(1f) + (6.2831855f * x_6))));
     let mp = ((exp(min(((((_e19 * co) - (sin_i_1 * so)) - vec3(1f)) * inv_v), vec3(0f))) * bessel) * norm);
     let sin_t = (sin_o_1 / hair_1.eta);
-    let _e167 = weft_hair_safe_sqrt((1f - (sin_t * sin_t)));
-    let chord_1 = (2f / max(_e167, 0.0001f));
+    let _e148 = weft_hair_safe_sqrt((1f - (sin_t * sin_t)));
+    let chord_1 = (2f / max(_e148, 0.0001f));
     let a_5 = (_e15 * inverseSqrt(max(((hair_1.eta * hair_1.eta) - (sin_o_1 * sin_o_1)), 0.00000001f)));
-    let d_1 = (0.8162094f * hair_1.s);
-    let sd = sin(d_1);
-    let cd = cos(d_1);
-    let _e193 = weft_hair_sqr((0.4534f * hair_1.s));
-    let c_r = sqrt(min(((0.5f + (0.5f * cos_phi_1)) + _e193), 1f));
-    let _e202 = weft_f_dielectric((_e15 * c_r), hair_1.eta);
-    let r = ((0.25f * c_r) * _e202);
-    let _e212 = weft_hair_fast_tt(((sin_half_1 * cd) + (cos_half * sd)), ((sin_half_1 * cd) - (cos_half * sd)), a_5, _e15, hair_1.eta, hair_1.sigma_a, chord_1);
+    let sd = hair_1.blur.x;
+    let cd = hair_1.blur.y;
+    let c_r = sqrt(min(((0.5f + (0.5f * cos_phi_1)) + hair_1.r_floor), 1f));
+    let _e179 = weft_f_dielectric((_e15 * c_r), hair_1.eta);
+    let r = ((0.25f * c_r) * _e179);
+    let _e189 = weft_hair_fast_tt(((sin_half_1 * cd) + (cos_half * sd)), ((sin_half_1 * cd) - (cos_half * sd)), a_5, _e15, hair_1.eta, hair_1.sigma_a, chord_1);
     let h_f = (0.6243f + (0.1898f * _e15));
-    let _e220 = weft_hair_safe_sqrt((1f - (h_f * h_f)));
-    let _e223 = weft_f_dielectric((_e15 * _e220), hair_1.eta);
+    let _e197 = weft_hair_safe_sqrt((1f - (h_f * h_f)));
+    let _e200 = weft_f_dielectric((_e15 * _e197), hair_1.eta);
     let h2_ = (0.4824f + (0.2778f * _e15));
-    let _e231 = weft_hair_safe_sqrt((1f - (h2_ * h2_)));
-    let _e234 = weft_f_dielectric((_e15 * _e231), hair_1.eta);
-    let _e242 = weft_hair_safe_sqrt((1f - (((h2_ * h2_) * a_5) * a_5)));
-    let t2_ = exp((-(hair_1.sigma_a) * (chord_1 * _e242)));
-    let _e248 = weft_hair_sqr((1f - _e234));
-    let a2_ = (((_e248 * _e234) * t2_) * t2_);
-    let ft = (_e223 * t2_);
+    let _e208 = weft_hair_safe_sqrt((1f - (h2_ * h2_)));
+    let _e211 = weft_f_dielectric((_e15 * _e208), hair_1.eta);
+    let _e219 = weft_hair_safe_sqrt((1f - (((h2_ * h2_) * a_5) * a_5)));
+    let t2_ = exp((-(hair_1.sigma_a) * (chord_1 * _e219)));
+    let _e225 = weft_hair_sqr((1f - _e211));
+    let a2_ = (((_e225 * _e211) * t2_) * t2_);
+    let ft = (_e200 * t2_);
     let a3_ = ((a2_ * ft) / (vec3(1f) - ft));
-    let s2_fit = ((-9.2609f + (a_5 * (72.357f + (a_5 * (-153.75f + (a_5 * (-67.745f + (a_5 * 239.74f)))))))) + (hair_1.s * ((65.993f + (a_5 * (-624.68f + (a_5 * (1704.7f + (a_5 * (-1105.8f - (a_5 * 430.94f)))))))) + (hair_1.s * (-107.38f + (a_5 * (1069.8f + (a_5 * (-3127.5f + (a_5 * 2706.6f))))))))));
+    let s2_fit = (hair_1.trt.x + (a_5 * (hair_1.trt.y + (a_5 * (hair_1.trt.z + (a_5 * (hair_1.trt.w + (a_5 * hair_1.trt4_))))))));
     let s_trt = sqrt(max(exp(clamp(s2_fit, -9f, 2.5f)), (hair_1.s * hair_1.s)));
-    let _e310 = weft_hair_trimmed_logistic(acos(cos_phi_1), s_trt);
-    out_4.s = ((vec3((mp.x * r)) + (mp.y * _e212)) + (mp.z * ((a2_ * _e310) + (a3_ * 0.15915494f))));
-    out_4.back = (vec3(_e223) + a2_);
-    let _e332 = weft_hair_sqr((1f - _e234));
-    out_4.albedo = (((vec3(_e223) + (_e332 * t2_)) + a2_) + a3_);
-    let _e338 = out_4;
-    return _e338;
+    let _e262 = weft_hair_trimmed_logistic(acos(cos_phi_1), s_trt);
+    out_4.s = ((vec3((mp.x * r)) + (mp.y * _e189)) + (mp.z * ((a2_ * _e262) + (a3_ * 0.15915494f))));
+    out_4.back = (vec3(_e200) + a2_);
+    let _e284 = weft_hair_sqr((1f - _e211));
+    out_4.albedo = (((vec3(_e200) + (_e284 * t2_)) + a2_) + a3_);
+    let _e290 = out_4;
+    return _e290;
+}
+
+fn hair_from_varyings(in_5: HairVaryings, sigma_a_2: vec3<f32>) -> WeftHair {
+    let v_1 = in_5.fibre.z;
+    return WeftHair(max(sigma_a_2, vec3(0f)), in_5.fibre.x, vec4<f32>(v_1, (0.25f * v_1), (4f * v_1), (4f * v_1)), in_5.fibre.y, in_5.sin2k.xyz, in_5.cos2k.xyz, in_5.inv_v.xyz, in_5.mp_norm.xyz, vec2<f32>(in_5.cos2k.w, in_5.mp_norm.w), in_5.sin2k.w, vec4<f32>(in_5.inv_v.w, in_5.trt.xyz), in_5.trt.w);
 }
 
 fn hair_strand(frame: mat3x3<f32>, uv0_: vec2<f32>) -> vec3<f32> {
@@ -530,13 +570,41 @@ fn fs_fringe_shadow() -> @location(0) vec4<f32> {
 }
 
 @vertex 
-fn vs_main(in_2: WeftVertexInput) -> WeftVaryings {
+fn vs_hair(in_2: WeftVertexInput) -> HairVaryings {
+    var h: WeftHair;
+    var scale: f32 = 0f;
+
     let _e1 = weft_forward_vertex(in_2);
-    return _e1;
+    let _e6 = material.ior;
+    let _e9 = material.roughness;
+    let _e12 = material.azimuthal_roughness;
+    let _e15 = material.scale_angle;
+    let _e16 = weft_hair_params(vec3(0f), _e6, _e9, _e12, _e15);
+    h = _e16;
+    {
+        let _e22 = material.azimuthal_roughness;
+        let _e23 = weft_hair_sigma_a_scale(_e22);
+        scale = _e23;
+    }
+    let _e30 = h.eta;
+    let _e32 = h.s;
+    let _e35 = h.v.x;
+    let _e36 = scale;
+    let _e39 = h.sin2k;
+    let _e41 = h.r_floor;
+    let _e44 = h.cos2k;
+    let _e47 = h.blur.x;
+    let _e50 = h.mp_norm;
+    let _e53 = h.blur.y;
+    let _e56 = h.inv_v;
+    let _e59 = h.trt.x;
+    let _e62 = h.trt;
+    let _e65 = h.trt4_;
+    return HairVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, vec4<f32>(_e30, _e32, _e35, _e36), vec4<f32>(_e39, _e41), vec4<f32>(_e44, _e47), vec4<f32>(_e50, _e53), vec4<f32>(_e56, _e59), vec4<f32>(_e62.yzw, _e65));
 }
 
 @fragment 
-fn fs_main(in_3: WeftVaryings) -> @location(0) vec4<f32> {
+fn fs_main(in_3: HairVaryings) -> @location(0) vec4<f32> {
     var color: vec3<f32>;
     var lobes: WeftHairLobes;
 
@@ -548,7 +616,7 @@ fn fs_main(in_3: WeftVaryings) -> @location(0) vec4<f32> {
     let base = saturate(base_rgba.xyz);
     let alpha = saturate(base_rgba.w);
     let _e19 = weft_surface(in_3.world_position, in_3.world_normal);
-    let v_1 = _e19.v;
+    let v_2 = _e19.v;
     let n_3 = _e19.n;
     let _e23 = weft_tangent_frame(n_3, in_3.world_tangent);
     let _e25 = hair_strand(_e23, in_3.uv0_);
@@ -559,27 +627,22 @@ fn fs_main(in_3: WeftVaryings) -> @location(0) vec4<f32> {
     let n_dot_l = dot(n_3, _e28);
     {
         let _e35 = weft_safe_normalize((_e25 + (_e27 * n_3)), _e25);
-        let _e38 = material.azimuthal_roughness;
-        let _e39 = weft_hair_sigma_a_from_color(base, _e38);
-        let _e42 = material.ior;
-        let _e45 = material.roughness;
-        let _e48 = material.azimuthal_roughness;
-        let _e51 = material.scale_angle;
-        let _e52 = weft_hair_params(_e39, _e42, _e45, _e48, _e51);
-        let _e53 = weft_hair_angles(_e35, v_1, _e28);
+        let _e38 = weft_hair_sigma_a_scaled(base, in_3.fibre.w);
+        let _e39 = hair_from_varyings(in_3, _e38);
+        let _e40 = weft_hair_angles(_e35, v_2, _e28);
         {
-            let _e55 = weft_hair_fast(_e52, _e35, v_1, _e28);
-            lobes = _e55;
+            let _e42 = weft_hair_fast(_e39, _e35, v_2, _e28);
+            lobes = _e42;
         }
         let body = smoothstep(-0.25f, HAIR_TERMINATOR, n_dot_l);
+        let _e49 = lobes.back;
+        let multiple = (base * (vec3(1f) - _e49));
+        let _e53 = lobes.s;
+        let direct = ((_e53 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
         let _e62 = lobes.back;
-        let multiple = (base * (vec3(1f) - _e62));
-        let _e66 = lobes.s;
-        let direct = ((_e66 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
-        let _e75 = lobes.back;
-        color = ((direct * _e29) + (_e30 * (multiple + _e75)));
+        color = ((direct * _e29) + (_e30 * (multiple + _e62)));
     }
-    let _e79 = color;
-    let radiance = clamp(_e79, vec3(0f), vec3(65504f));
+    let _e66 = color;
+    let radiance = clamp(_e66, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

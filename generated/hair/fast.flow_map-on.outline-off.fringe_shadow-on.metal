@@ -86,6 +86,14 @@ struct WeftHair {
     char _pad4[12];
     metal::float3 sin2k;
     metal::float3 cos2k;
+    metal::float3 inv_v;
+    metal::float3 mp_norm;
+    metal::float2 blur;
+    float r_floor;
+    char _pad10[4];
+    metal::float4 trt;
+    float trt4_;
+    char _pad12[12];
 };
 struct WeftHairLobes {
     metal::float3 s;
@@ -96,6 +104,20 @@ struct WeftHairAngles {
     metal::float4 theta;
     float phi;
     char _pad2[12];
+};
+struct HairVaryings {
+    metal::float4 clip_position;
+    metal::float3 world_position;
+    metal::float3 world_normal;
+    metal::float4 world_tangent;
+    metal::float2 uv0_;
+    char _pad5[8];
+    metal::float4 fibre;
+    metal::float4 sin2k;
+    metal::float4 cos2k;
+    metal::float4 mp_norm;
+    metal::float4 inv_v;
+    metal::float4 trt;
 };
 constant float WEFT_PI = 3.1415927;
 constant float WEFT_INV_PI = 0.31830987;
@@ -285,14 +307,20 @@ float weft_hair_logistic_scale(
     return 0.62665707 * (((0.265 * b_4) + (1.194 * b2_1)) + (5.372 * b22_));
 }
 
-metal::float3 weft_hair_sigma_a_from_color(
+metal::float3 weft_hair_sigma_a_scaled(
     metal::float3 c,
+    float scale_1
+) {
+    metal::float3 l = metal::log(metal::clamp(c, metal::float3(0.0001), metal::float3(1.0))) * scale_1;
+    return l * l;
+}
+
+float weft_hair_sigma_a_scale(
     float beta_n_1
 ) {
     float b_5 = metal::clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1.0);
     float d = ((((5.969 - (0.215 * b_5)) + ((2.532 * b_5) * b_5)) - (10.73 * metal::pow(b_5, 3.0))) + (5.574 * metal::pow(b_5, 4.0))) + (0.245 * metal::pow(b_5, 5.0));
-    metal::float3 l = metal::log(metal::clamp(c, metal::float3(0.0001), metal::float3(1.0))) / metal::float3(d);
-    return l * l;
+    return 1.0 / d;
 }
 
 WeftHair weft_hair_params(
@@ -318,8 +346,24 @@ WeftHair weft_hair_params(
     float c2_ = (c1_ * c1_) - (s1_ * s1_);
     hair.sin2k = metal::float3(s0_, s1_, s2_);
     hair.cos2k = metal::float3(_e29, c1_, c2_);
-    WeftHair _e46 = hair;
-    return _e46;
+    hair.inv_v = metal::float3(1.0, 4.0, 0.25) / metal::float3(_e13);
+    float _e55 = hair.inv_v.x;
+    float e_trt = metal::exp(-0.5 * _e55);
+    float _e60 = weft_hair_sqr(e_trt * e_trt);
+    metal::float3 _e63 = hair.inv_v;
+    float _e67 = weft_hair_sqr(_e60 * _e60);
+    hair.mp_norm = _e63 / (metal::float3(1.0) - metal::float3(_e60, _e67, e_trt));
+    float _e73 = hair.s;
+    float d_1 = 0.8162094 * _e73;
+    hair.blur = metal::float2(metal::sin(d_1), metal::cos(d_1));
+    float _e81 = hair.s;
+    float _e84 = weft_hair_sqr(0.4534 * _e81);
+    hair.r_floor = _e84;
+    float sh_1 = hair.s;
+    hair.trt = metal::float4(-9.2609 + (sh_1 * (65.993 - (107.38 * sh_1))), 72.357 + (sh_1 * (-624.68 + (1069.8 * sh_1))), -153.75 + (sh_1 * (1704.7 - (3127.5 * sh_1))), -67.745 + (sh_1 * (-1105.8 + (2706.6 * sh_1))));
+    hair.trt4_ = 239.74 - (430.94 * sh_1);
+    WeftHair _e122 = hair;
+    return _e122;
 }
 
 float weft_hair_logistic(
@@ -406,48 +450,51 @@ WeftHairLobes weft_hair_fast(
     float sin_half_1 = metal::sqrt(0.5 - (0.5 * cos_phi_1));
     metal::float3 so = metal::float3((sin_o_1 * hair_1.cos2k.y) - (_e15 * hair_1.sin2k.y), (sin_o_1 * hair_1.cos2k.x) + (_e15 * hair_1.sin2k.x), (sin_o_1 * hair_1.cos2k.z) + (_e15 * hair_1.sin2k.z));
     metal::float3 co = metal::abs(metal::float3((_e15 * hair_1.cos2k.y) + (sin_o_1 * hair_1.sin2k.y), (_e15 * hair_1.cos2k.x) - (sin_o_1 * hair_1.sin2k.x), (_e15 * hair_1.cos2k.z) - (sin_o_1 * hair_1.sin2k.z)));
-    metal::float3 inv_v = metal::float3(1.0, 4.0, 0.25) / metal::float3(hair_1.v.x);
-    float e_trt = metal::exp(-0.5 * inv_v.x);
-    float _e107 = weft_hair_sqr(e_trt * e_trt);
-    float _e111 = weft_hair_sqr(_e107 * _e107);
-    metal::float3 norm = inv_v / (metal::float3(1.0) - metal::float3(_e107, _e111, e_trt));
+    metal::float3 inv_v = hair_1.inv_v;
+    metal::float3 norm = hair_1.mp_norm;
     metal::float3 x_6 = (_e19 * co) * inv_v;
     metal::float3 u = metal::float3(1.0) / (metal::float3(1.0) + (0.7 * x_6));
     metal::float3 bessel = (metal::float3(1.0) + ((u * (metal::float3(1.0) - u)) * (metal::float3(0.181903) + (u * (metal::float3(-0.401835) + (u * 3.1851)))))) * metal::rsqrt(metal::float3(1.0) + (6.2831855 * x_6));
     metal::float3 mp = (metal::exp(metal::min((((_e19 * co) - (sin_i_1 * so)) - metal::float3(1.0)) * inv_v, metal::float3(0.0))) * bessel) * norm;
     float sin_t = sin_o_1 / hair_1.eta;
-    float _e167 = weft_hair_safe_sqrt(1.0 - (sin_t * sin_t));
-    float chord_1 = 2.0 / metal::max(_e167, 0.0001);
+    float _e148 = weft_hair_safe_sqrt(1.0 - (sin_t * sin_t));
+    float chord_1 = 2.0 / metal::max(_e148, 0.0001);
     float a_5 = _e15 * metal::rsqrt(metal::max((hair_1.eta * hair_1.eta) - (sin_o_1 * sin_o_1), 0.00000001));
-    float d_1 = 0.8162094 * hair_1.s;
-    float sd = metal::sin(d_1);
-    float cd = metal::cos(d_1);
-    float _e193 = weft_hair_sqr(0.4534 * hair_1.s);
-    float c_r = metal::sqrt(metal::min((0.5 + (0.5 * cos_phi_1)) + _e193, 1.0));
-    float _e202 = weft_f_dielectric(_e15 * c_r, hair_1.eta);
-    float r = (0.25 * c_r) * _e202;
-    metal::float3 _e212 = weft_hair_fast_tt((sin_half_1 * cd) + (cos_half * sd), (sin_half_1 * cd) - (cos_half * sd), a_5, _e15, hair_1.eta, hair_1.sigma_a, chord_1);
+    float sd = hair_1.blur.x;
+    float cd = hair_1.blur.y;
+    float c_r = metal::sqrt(metal::min((0.5 + (0.5 * cos_phi_1)) + hair_1.r_floor, 1.0));
+    float _e179 = weft_f_dielectric(_e15 * c_r, hair_1.eta);
+    float r = (0.25 * c_r) * _e179;
+    metal::float3 _e189 = weft_hair_fast_tt((sin_half_1 * cd) + (cos_half * sd), (sin_half_1 * cd) - (cos_half * sd), a_5, _e15, hair_1.eta, hair_1.sigma_a, chord_1);
     float h_f = 0.6243 + (0.1898 * _e15);
-    float _e220 = weft_hair_safe_sqrt(1.0 - (h_f * h_f));
-    float _e223 = weft_f_dielectric(_e15 * _e220, hair_1.eta);
+    float _e197 = weft_hair_safe_sqrt(1.0 - (h_f * h_f));
+    float _e200 = weft_f_dielectric(_e15 * _e197, hair_1.eta);
     float h2_ = 0.4824 + (0.2778 * _e15);
-    float _e231 = weft_hair_safe_sqrt(1.0 - (h2_ * h2_));
-    float _e234 = weft_f_dielectric(_e15 * _e231, hair_1.eta);
-    float _e242 = weft_hair_safe_sqrt(1.0 - (((h2_ * h2_) * a_5) * a_5));
-    metal::float3 t2_ = metal::exp(-(hair_1.sigma_a) * (chord_1 * _e242));
-    float _e248 = weft_hair_sqr(1.0 - _e234);
-    metal::float3 a2_ = ((_e248 * _e234) * t2_) * t2_;
-    metal::float3 ft = _e223 * t2_;
+    float _e208 = weft_hair_safe_sqrt(1.0 - (h2_ * h2_));
+    float _e211 = weft_f_dielectric(_e15 * _e208, hair_1.eta);
+    float _e219 = weft_hair_safe_sqrt(1.0 - (((h2_ * h2_) * a_5) * a_5));
+    metal::float3 t2_ = metal::exp(-(hair_1.sigma_a) * (chord_1 * _e219));
+    float _e225 = weft_hair_sqr(1.0 - _e211);
+    metal::float3 a2_ = ((_e225 * _e211) * t2_) * t2_;
+    metal::float3 ft = _e200 * t2_;
     metal::float3 a3_ = (a2_ * ft) / (metal::float3(1.0) - ft);
-    float s2_fit = (-9.2609 + (a_5 * (72.357 + (a_5 * (-153.75 + (a_5 * (-67.745 + (a_5 * 239.74)))))))) + (hair_1.s * ((65.993 + (a_5 * (-624.68 + (a_5 * (1704.7 + (a_5 * (-1105.8 - (a_5 * 430.94)))))))) + (hair_1.s * (-107.38 + (a_5 * (1069.8 + (a_5 * (-3127.5 + (a_5 * 2706.6)))))))));
+    float s2_fit = hair_1.trt.x + (a_5 * (hair_1.trt.y + (a_5 * (hair_1.trt.z + (a_5 * (hair_1.trt.w + (a_5 * hair_1.trt4_)))))));
     float s_trt = metal::sqrt(metal::max(metal::exp(metal::clamp(s2_fit, -9.0, 2.5)), hair_1.s * hair_1.s));
-    float _e310 = weft_hair_trimmed_logistic(metal::acos(cos_phi_1), s_trt);
-    out_3.s = (metal::float3(mp.x * r) + (mp.y * _e212)) + (mp.z * ((a2_ * _e310) + (a3_ * 0.15915494)));
-    out_3.back = metal::float3(_e223) + a2_;
-    float _e332 = weft_hair_sqr(1.0 - _e234);
-    out_3.albedo = ((metal::float3(_e223) + (_e332 * t2_)) + a2_) + a3_;
-    WeftHairLobes _e338 = out_3;
-    return _e338;
+    float _e262 = weft_hair_trimmed_logistic(metal::acos(cos_phi_1), s_trt);
+    out_3.s = (metal::float3(mp.x * r) + (mp.y * _e189)) + (mp.z * ((a2_ * _e262) + (a3_ * 0.15915494)));
+    out_3.back = metal::float3(_e200) + a2_;
+    float _e284 = weft_hair_sqr(1.0 - _e211);
+    out_3.albedo = ((metal::float3(_e200) + (_e284 * t2_)) + a2_) + a3_;
+    WeftHairLobes _e290 = out_3;
+    return _e290;
+}
+
+WeftHair hair_from_varyings(
+    HairVaryings in_4,
+    metal::float3 sigma_a_2
+) {
+    float v_1 = in_4.fibre.z;
+    return WeftHair {metal::max(sigma_a_2, metal::float3(0.0)), in_4.fibre.x, metal::float4(v_1, 0.25 * v_1, 4.0 * v_1, 4.0 * v_1), in_4.fibre.y, {}, in_4.sin2k.xyz, in_4.cos2k.xyz, in_4.inv_v.xyz, in_4.mp_norm.xyz, metal::float2(in_4.cos2k.w, in_4.mp_norm.w), in_4.sin2k.w, {}, metal::float4(in_4.inv_v.w, in_4.trt.xyz), in_4.trt.w};
 }
 
 metal::float3 hair_strand(
@@ -579,28 +626,62 @@ fragment fs_fringe_shadowOutput fs_fringe_shadow(
 }
 
 
-struct vs_mainInput {
+struct vs_hairInput {
     metal::float3 position [[attribute(0)]];
     metal::float3 normal [[attribute(1)]];
     metal::float4 tangent_1 [[attribute(2)]];
     metal::float2 uv0_2 [[attribute(3)]];
 };
-struct vs_mainOutput {
+struct vs_hairOutput {
     metal::float4 clip_position [[position]];
     metal::float3 world_position [[user(loc0), center_perspective]];
     metal::float3 world_normal [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
+    metal::float4 fibre [[user(loc4), flat]];
+    metal::float4 sin2k [[user(loc5), flat]];
+    metal::float4 cos2k [[user(loc6), flat]];
+    metal::float4 mp_norm [[user(loc7), flat]];
+    metal::float4 inv_v [[user(loc8), flat]];
+    metal::float4 trt [[user(loc9), flat]];
 };
-vertex vs_mainOutput vs_main(
-  vs_mainInput varyings_2 [[stage_in]]
+vertex vs_hairOutput vs_hair(
+  vs_hairInput varyings_2 [[stage_in]]
 , constant WeftFrame& weft_frame [[buffer(0)]]
 , constant WeftObject& weft_object [[buffer(2)]]
+, constant WeftMaterial& material [[buffer(1)]]
 ) {
     const WeftVertexInput in_1 = { varyings_2.position, varyings_2.normal, varyings_2.tangent_1, varyings_2.uv0_2 };
+    WeftHair h = {};
+    float scale = 0.0;
     WeftVaryings _e1 = weft_forward_vertex(in_1, weft_frame, weft_object);
-    const auto _tmp_1 = _e1;
-    return vs_mainOutput { _tmp_1.clip_position, _tmp_1.world_position, _tmp_1.world_normal, _tmp_1.world_tangent, _tmp_1.uv0_ };
+    float _e6 = material.ior;
+    float _e9 = material.roughness;
+    float _e12 = material.azimuthal_roughness;
+    float _e15 = material.scale_angle;
+    WeftHair _e16 = weft_hair_params(metal::float3(0.0), _e6, _e9, _e12, _e15);
+    h = _e16;
+    {
+        float _e22 = material.azimuthal_roughness;
+        float _e23 = weft_hair_sigma_a_scale(_e22);
+        scale = _e23;
+    }
+    float _e30 = h.eta;
+    float _e32 = h.s;
+    float _e35 = h.v.x;
+    float _e36 = scale;
+    metal::float3 _e39 = h.sin2k;
+    float _e41 = h.r_floor;
+    metal::float3 _e44 = h.cos2k;
+    float _e47 = h.blur.x;
+    metal::float3 _e50 = h.mp_norm;
+    float _e53 = h.blur.y;
+    metal::float3 _e56 = h.inv_v;
+    float _e59 = h.trt.x;
+    metal::float4 _e62 = h.trt;
+    float _e65 = h.trt4_;
+    const auto _tmp_1 = HairVaryings {_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, {}, metal::float4(_e30, _e32, _e35, _e36), metal::float4(_e39, _e41), metal::float4(_e44, _e47), metal::float4(_e50, _e53), metal::float4(_e56, _e59), metal::float4(_e62.yzw, _e65)};
+    return vs_hairOutput { _tmp_1.clip_position, _tmp_1.world_position, _tmp_1.world_normal, _tmp_1.world_tangent, _tmp_1.uv0_, _tmp_1.fibre, _tmp_1.sin2k, _tmp_1.cos2k, _tmp_1.mp_norm, _tmp_1.inv_v, _tmp_1.trt };
 }
 
 
@@ -609,6 +690,12 @@ struct fs_mainInput {
     metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_2 [[user(loc3), center_perspective]];
+    metal::float4 fibre [[user(loc4), flat]];
+    metal::float4 sin2k [[user(loc5), flat]];
+    metal::float4 cos2k [[user(loc6), flat]];
+    metal::float4 mp_norm [[user(loc7), flat]];
+    metal::float4 inv_v [[user(loc8), flat]];
+    metal::float4 trt [[user(loc9), flat]];
 };
 struct fs_mainOutput {
     metal::float4 member_3 [[color(0)]];
@@ -624,7 +711,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> jitter_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> uv_rotate_mask [[texture(3)]]
 ) {
-    const WeftVaryings in_2 = { clip_position, varyings_3.world_position_2, varyings_3.world_normal_1, varyings_3.world_tangent, varyings_3.uv0_2 };
+    const HairVaryings in_2 = { clip_position, varyings_3.world_position_2, varyings_3.world_normal_1, varyings_3.world_tangent, varyings_3.uv0_2, {}, varyings_3.fibre, varyings_3.sin2k, varyings_3.cos2k, varyings_3.mp_norm, varyings_3.inv_v, varyings_3.trt };
     metal::float3 color = {};
     WeftHairLobes lobes = {};
     metal::float4 _e4 = material.base_map_st;
@@ -635,7 +722,7 @@ fragment fs_mainOutput fs_main(
     metal::float3 base = metal::saturate(base_rgba.xyz);
     float alpha = metal::saturate(base_rgba.w);
     WeftSurface _e19 = weft_surface(in_2.world_position, in_2.world_normal, weft_frame);
-    metal::float3 v_1 = _e19.v;
+    metal::float3 v_2 = _e19.v;
     metal::float3 n_3 = _e19.n;
     metal::float3x3 _e23 = weft_tangent_frame(n_3, in_2.world_tangent);
     metal::float3 _e25 = hair_strand(_e23, in_2.uv0_, material, material_sampler, flow_map);
@@ -646,27 +733,22 @@ fragment fs_mainOutput fs_main(
     float n_dot_l = metal::dot(n_3, _e28);
     {
         metal::float3 _e35 = weft_safe_normalize(_e25 + (_e27 * n_3), _e25);
-        float _e38 = material.azimuthal_roughness;
-        metal::float3 _e39 = weft_hair_sigma_a_from_color(base, _e38);
-        float _e42 = material.ior;
-        float _e45 = material.roughness;
-        float _e48 = material.azimuthal_roughness;
-        float _e51 = material.scale_angle;
-        WeftHair _e52 = weft_hair_params(_e39, _e42, _e45, _e48, _e51);
-        WeftHairAngles _e53 = weft_hair_angles(_e35, v_1, _e28);
+        metal::float3 _e38 = weft_hair_sigma_a_scaled(base, in_2.fibre.w);
+        WeftHair _e39 = hair_from_varyings(in_2, _e38);
+        WeftHairAngles _e40 = weft_hair_angles(_e35, v_2, _e28);
         {
-            WeftHairLobes _e55 = weft_hair_fast(_e52, _e35, v_1, _e28);
-            lobes = _e55;
+            WeftHairLobes _e42 = weft_hair_fast(_e39, _e35, v_2, _e28);
+            lobes = _e42;
         }
         float body = metal::smoothstep(-0.25, HAIR_TERMINATOR, n_dot_l);
+        metal::float3 _e49 = lobes.back;
+        metal::float3 multiple = base * (metal::float3(1.0) - _e49);
+        metal::float3 _e53 = lobes.s;
+        metal::float3 direct = (_e53 * body) + (multiple * (WEFT_INV_PI * metal::saturate(n_dot_l)));
         metal::float3 _e62 = lobes.back;
-        metal::float3 multiple = base * (metal::float3(1.0) - _e62);
-        metal::float3 _e66 = lobes.s;
-        metal::float3 direct = (_e66 * body) + (multiple * (WEFT_INV_PI * metal::saturate(n_dot_l)));
-        metal::float3 _e75 = lobes.back;
-        color = (direct * _e29) + (_e30 * (multiple + _e75));
+        color = (direct * _e29) + (_e30 * (multiple + _e62));
     }
-    metal::float3 _e79 = color;
-    metal::float3 radiance = metal::clamp(_e79, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e66 = color;
+    metal::float3 radiance = metal::clamp(_e66, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

@@ -77,6 +77,12 @@ struct WeftHair {
     float s;
     vec3 sin2k;
     vec3 cos2k;
+    vec3 inv_v;
+    vec3 mp_norm;
+    vec2 blur;
+    float r_floor;
+    vec4 trt;
+    float trt4_;
 };
 struct WeftHairLobes {
     vec3 s;
@@ -86,6 +92,19 @@ struct WeftHairLobes {
 struct WeftHairAngles {
     vec4 theta;
     float phi;
+};
+struct HairVaryings {
+    vec4 clip_position;
+    vec3 world_position;
+    vec3 world_normal;
+    vec4 world_tangent;
+    vec2 uv0_;
+    vec4 fibre;
+    vec4 sin2k;
+    vec4 cos2k;
+    vec4 mp_norm;
+    vec4 inv_v;
+    vec4 trt;
 };
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
@@ -170,15 +189,19 @@ float weft_hair_logistic_scale(float beta_n) {
     return (0.62665707 * (((0.265 * b_4) + (1.194 * b2_1)) + (5.372 * b22_)));
 }
 
-vec3 weft_hair_sigma_a_from_color(vec3 c, float beta_n_1) {
-    float b_5 = clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1.0);
-    float d = (((((5.969 - (0.215 * b_5)) + ((2.532 * b_5) * b_5)) - (10.73 * pow(b_5, 3.0))) + (5.574 * pow(b_5, 4.0))) + (0.245 * pow(b_5, 5.0)));
-    vec3 l = (log(clamp(c, vec3(0.0001), vec3(1.0))) / vec3(d));
+vec3 weft_hair_sigma_a_scaled(vec3 c, float scale_1) {
+    vec3 l = (log(clamp(c, vec3(0.0001), vec3(1.0))) * scale_1);
     return (l * l);
 }
 
+float weft_hair_sigma_a_scale(float beta_n_1) {
+    float b_5 = clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1.0);
+    float d = (((((5.969 - (0.215 * b_5)) + ((2.532 * b_5) * b_5)) - (10.73 * pow(b_5, 3.0))) + (5.574 * pow(b_5, 4.0))) + (0.245 * pow(b_5, 5.0)));
+    return (1.0 / d);
+}
+
 WeftHair weft_hair_params(vec3 sigma_a, float eta_1, float beta_m_1, float beta_n_2, float alpha_deg) {
-    WeftHair hair = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0));
+    WeftHair hair = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0, vec4(0.0), 0.0);
     hair.sigma_a = max(sigma_a, vec3(0.0));
     hair.eta = max(eta_1, 1.0001);
     float _e13 = weft_hair_variance(beta_m_1);
@@ -194,8 +217,24 @@ WeftHair weft_hair_params(vec3 sigma_a, float eta_1, float beta_m_1, float beta_
     float c2_ = ((c1_ * c1_) - (s1_ * s1_));
     hair.sin2k = vec3(s0_, s1_, s2_);
     hair.cos2k = vec3(_e29, c1_, c2_);
-    WeftHair _e46 = hair;
-    return _e46;
+    hair.inv_v = (vec3(1.0, 4.0, 0.25) / vec3(_e13));
+    float _e55 = hair.inv_v.x;
+    float e_trt = exp((-0.5 * _e55));
+    float _e60 = weft_hair_sqr((e_trt * e_trt));
+    vec3 _e63 = hair.inv_v;
+    float _e67 = weft_hair_sqr((_e60 * _e60));
+    hair.mp_norm = (_e63 / (vec3(1.0) - vec3(_e60, _e67, e_trt)));
+    float _e73 = hair.s;
+    float d_1 = (0.8162094 * _e73);
+    hair.blur = vec2(sin(d_1), cos(d_1));
+    float _e81 = hair.s;
+    float _e84 = weft_hair_sqr((0.4534 * _e81));
+    hair.r_floor = _e84;
+    float sh = hair.s;
+    hair.trt = vec4((-9.2609 + (sh * (65.993 - (107.38 * sh)))), (72.357 + (sh * (-624.68 + (1069.8 * sh)))), (-153.75 + (sh * (1704.7 - (3127.5 * sh)))), (-67.745 + (sh * (-1105.8 + (2706.6 * sh)))));
+    hair.trt4_ = (239.74 - (430.94 * sh));
+    WeftHair _e122 = hair;
+    return _e122;
 }
 
 float weft_hair_logistic(float x_2, float s) {
@@ -256,48 +295,48 @@ WeftHairLobes weft_hair_fast(WeftHair hair_1, vec3 t_1, vec3 o_1, vec3 i_1) {
     float sin_half_1 = sqrt((0.5 - (0.5 * cos_phi_1)));
     vec3 so = vec3(((sin_o_1 * hair_1.cos2k.y) - (_e15 * hair_1.sin2k.y)), ((sin_o_1 * hair_1.cos2k.x) + (_e15 * hair_1.sin2k.x)), ((sin_o_1 * hair_1.cos2k.z) + (_e15 * hair_1.sin2k.z)));
     vec3 co = abs(vec3(((_e15 * hair_1.cos2k.y) + (sin_o_1 * hair_1.sin2k.y)), ((_e15 * hair_1.cos2k.x) - (sin_o_1 * hair_1.sin2k.x)), ((_e15 * hair_1.cos2k.z) - (sin_o_1 * hair_1.sin2k.z))));
-    vec3 inv_v = (vec3(1.0, 4.0, 0.25) / vec3(hair_1.v.x));
-    float e_trt = exp((-0.5 * inv_v.x));
-    float _e107 = weft_hair_sqr((e_trt * e_trt));
-    float _e111 = weft_hair_sqr((_e107 * _e107));
-    vec3 norm = (inv_v / (vec3(1.0) - vec3(_e107, _e111, e_trt)));
+    vec3 inv_v = hair_1.inv_v;
+    vec3 norm = hair_1.mp_norm;
     vec3 x_6 = ((_e19 * co) * inv_v);
     vec3 u = (vec3(1.0) / (vec3(1.0) + (0.7 * x_6)));
     vec3 bessel = ((vec3(1.0) + ((u * (vec3(1.0) - u)) * (vec3(0.181903) + (u * (vec3(-0.401835) + (u * 3.1851)))))) * inversesqrt((vec3(1.0) + (6.2831855 * x_6))));
     vec3 mp = ((exp(min(((((_e19 * co) - (sin_i_1 * so)) - vec3(1.0)) * inv_v), vec3(0.0))) * bessel) * norm);
     float sin_t = (sin_o_1 / hair_1.eta);
-    float _e167 = weft_hair_safe_sqrt((1.0 - (sin_t * sin_t)));
-    float chord_1 = (2.0 / max(_e167, 0.0001));
+    float _e148 = weft_hair_safe_sqrt((1.0 - (sin_t * sin_t)));
+    float chord_1 = (2.0 / max(_e148, 0.0001));
     float a_5 = (_e15 * inversesqrt(max(((hair_1.eta * hair_1.eta) - (sin_o_1 * sin_o_1)), 1e-8)));
-    float d_1 = (0.8162094 * hair_1.s);
-    float sd = sin(d_1);
-    float cd = cos(d_1);
-    float _e193 = weft_hair_sqr((0.4534 * hair_1.s));
-    float c_r = sqrt(min(((0.5 + (0.5 * cos_phi_1)) + _e193), 1.0));
-    float _e202 = weft_f_dielectric((_e15 * c_r), hair_1.eta);
-    float r = ((0.25 * c_r) * _e202);
-    vec3 _e212 = weft_hair_fast_tt(((sin_half_1 * cd) + (cos_half * sd)), ((sin_half_1 * cd) - (cos_half * sd)), a_5, _e15, hair_1.eta, hair_1.sigma_a, chord_1);
+    float sd = hair_1.blur.x;
+    float cd = hair_1.blur.y;
+    float c_r = sqrt(min(((0.5 + (0.5 * cos_phi_1)) + hair_1.r_floor), 1.0));
+    float _e179 = weft_f_dielectric((_e15 * c_r), hair_1.eta);
+    float r = ((0.25 * c_r) * _e179);
+    vec3 _e189 = weft_hair_fast_tt(((sin_half_1 * cd) + (cos_half * sd)), ((sin_half_1 * cd) - (cos_half * sd)), a_5, _e15, hair_1.eta, hair_1.sigma_a, chord_1);
     float h_f = (0.6243 + (0.1898 * _e15));
-    float _e220 = weft_hair_safe_sqrt((1.0 - (h_f * h_f)));
-    float _e223 = weft_f_dielectric((_e15 * _e220), hair_1.eta);
+    float _e197 = weft_hair_safe_sqrt((1.0 - (h_f * h_f)));
+    float _e200 = weft_f_dielectric((_e15 * _e197), hair_1.eta);
     float h2_ = (0.4824 + (0.2778 * _e15));
-    float _e231 = weft_hair_safe_sqrt((1.0 - (h2_ * h2_)));
-    float _e234 = weft_f_dielectric((_e15 * _e231), hair_1.eta);
-    float _e242 = weft_hair_safe_sqrt((1.0 - (((h2_ * h2_) * a_5) * a_5)));
-    vec3 t2_ = exp((-(hair_1.sigma_a) * (chord_1 * _e242)));
-    float _e248 = weft_hair_sqr((1.0 - _e234));
-    vec3 a2_ = (((_e248 * _e234) * t2_) * t2_);
-    vec3 ft = (_e223 * t2_);
+    float _e208 = weft_hair_safe_sqrt((1.0 - (h2_ * h2_)));
+    float _e211 = weft_f_dielectric((_e15 * _e208), hair_1.eta);
+    float _e219 = weft_hair_safe_sqrt((1.0 - (((h2_ * h2_) * a_5) * a_5)));
+    vec3 t2_ = exp((-(hair_1.sigma_a) * (chord_1 * _e219)));
+    float _e225 = weft_hair_sqr((1.0 - _e211));
+    vec3 a2_ = (((_e225 * _e211) * t2_) * t2_);
+    vec3 ft = (_e200 * t2_);
     vec3 a3_ = ((a2_ * ft) / (vec3(1.0) - ft));
-    float s2_fit = ((-9.2609 + (a_5 * (72.357 + (a_5 * (-153.75 + (a_5 * (-67.745 + (a_5 * 239.74)))))))) + (hair_1.s * ((65.993 + (a_5 * (-624.68 + (a_5 * (1704.7 + (a_5 * (-1105.8 - (a_5 * 430.94)))))))) + (hair_1.s * (-107.38 + (a_5 * (1069.8 + (a_5 * (-3127.5 + (a_5 * 2706.6))))))))));
+    float s2_fit = (hair_1.trt.x + (a_5 * (hair_1.trt.y + (a_5 * (hair_1.trt.z + (a_5 * (hair_1.trt.w + (a_5 * hair_1.trt4_))))))));
     float s_trt = sqrt(max(exp(clamp(s2_fit, -9.0, 2.5)), (hair_1.s * hair_1.s)));
-    float _e310 = weft_hair_trimmed_logistic(acos(cos_phi_1), s_trt);
-    out_4.s = ((vec3((mp.x * r)) + (mp.y * _e212)) + (mp.z * ((a2_ * _e310) + (a3_ * 0.15915494))));
-    out_4.back = (vec3(_e223) + a2_);
-    float _e332 = weft_hair_sqr((1.0 - _e234));
-    out_4.albedo = (((vec3(_e223) + (_e332 * t2_)) + a2_) + a3_);
-    WeftHairLobes _e338 = out_4;
-    return _e338;
+    float _e262 = weft_hair_trimmed_logistic(acos(cos_phi_1), s_trt);
+    out_4.s = ((vec3((mp.x * r)) + (mp.y * _e189)) + (mp.z * ((a2_ * _e262) + (a3_ * 0.15915494))));
+    out_4.back = (vec3(_e200) + a2_);
+    float _e284 = weft_hair_sqr((1.0 - _e211));
+    out_4.albedo = (((vec3(_e200) + (_e284 * t2_)) + a2_) + a3_);
+    WeftHairLobes _e290 = out_4;
+    return _e290;
+}
+
+WeftHair hair_from_varyings(HairVaryings in_5, vec3 sigma_a_2) {
+    float v_1 = in_5.fibre.z;
+    return WeftHair(max(sigma_a_2, vec3(0.0)), in_5.fibre.x, vec4(v_1, (0.25 * v_1), (4.0 * v_1), (4.0 * v_1)), in_5.fibre.y, in_5.sin2k.xyz, in_5.cos2k.xyz, in_5.inv_v.xyz, in_5.mp_norm.xyz, vec2(in_5.cos2k.w, in_5.mp_norm.w), in_5.sin2k.w, vec4(in_5.inv_v.w, in_5.trt.xyz), in_5.trt.w);
 }
 
 float hair_hash(uint x_4) {

@@ -64,6 +64,12 @@ struct WeftHair {
     float s;
     vec3 sin2k;
     vec3 cos2k;
+    vec3 inv_v;
+    vec3 mp_norm;
+    vec2 blur;
+    float r_floor;
+    vec4 trt;
+    float trt4_;
 };
 struct WeftHairAttenuation {
     float a0_;
@@ -80,6 +86,19 @@ struct WeftHairLobes {
 struct WeftHairAngles {
     vec4 theta;
     float phi;
+};
+struct HairVaryings {
+    vec4 clip_position;
+    vec3 world_position;
+    vec3 world_normal;
+    vec4 world_tangent;
+    vec2 uv0_;
+    vec4 fibre;
+    vec4 sin2k;
+    vec4 cos2k;
+    vec4 mp_norm;
+    vec4 inv_v;
+    vec4 trt;
 };
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
@@ -109,6 +128,12 @@ layout(location = 0) smooth in vec3 _vs2fs_location0;
 layout(location = 1) smooth in vec3 _vs2fs_location1;
 layout(location = 2) smooth in vec4 _vs2fs_location2;
 layout(location = 3) smooth in vec2 _vs2fs_location3;
+layout(location = 4) flat in vec4 _vs2fs_location4;
+layout(location = 5) flat in vec4 _vs2fs_location5;
+layout(location = 6) flat in vec4 _vs2fs_location6;
+layout(location = 7) flat in vec4 _vs2fs_location7;
+layout(location = 8) flat in vec4 _vs2fs_location8;
+layout(location = 9) flat in vec4 _vs2fs_location9;
 layout(location = 0) out vec4 _fs2p_location0;
 
 vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
@@ -223,15 +248,19 @@ float weft_hair_logistic_scale(float beta_n) {
     return (0.62665707 * (((0.265 * b_4) + (1.194 * b2_1)) + (5.372 * b22_)));
 }
 
-vec3 weft_hair_sigma_a_from_color(vec3 c, float beta_n_1) {
-    float b_5 = clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1.0);
-    float d = (((((5.969 - (0.215 * b_5)) + ((2.532 * b_5) * b_5)) - (10.73 * pow(b_5, 3.0))) + (5.574 * pow(b_5, 4.0))) + (0.245 * pow(b_5, 5.0)));
-    vec3 l = (log(clamp(c, vec3(0.0001), vec3(1.0))) / vec3(d));
+vec3 weft_hair_sigma_a_scaled(vec3 c, float scale_1) {
+    vec3 l = (log(clamp(c, vec3(0.0001), vec3(1.0))) * scale_1);
     return (l * l);
 }
 
+float weft_hair_sigma_a_scale(float beta_n_1) {
+    float b_5 = clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1.0);
+    float d = (((((5.969 - (0.215 * b_5)) + ((2.532 * b_5) * b_5)) - (10.73 * pow(b_5, 3.0))) + (5.574 * pow(b_5, 4.0))) + (0.245 * pow(b_5, 5.0)));
+    return (1.0 / d);
+}
+
 WeftHair weft_hair_params(vec3 sigma_a, float eta_1, float beta_m_1, float beta_n_2, float alpha_deg) {
-    WeftHair hair = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0));
+    WeftHair hair = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0, vec4(0.0), 0.0);
     hair.sigma_a = max(sigma_a, vec3(0.0));
     hair.eta = max(eta_1, 1.0001);
     float _e13 = weft_hair_variance(beta_m_1);
@@ -247,8 +276,24 @@ WeftHair weft_hair_params(vec3 sigma_a, float eta_1, float beta_m_1, float beta_
     float c2_ = ((c1_ * c1_) - (s1_ * s1_));
     hair.sin2k = vec3(s0_, s1_, s2_);
     hair.cos2k = vec3(_e29, c1_, c2_);
-    WeftHair _e46 = hair;
-    return _e46;
+    hair.inv_v = (vec3(1.0, 4.0, 0.25) / vec3(_e13));
+    float _e55 = hair.inv_v.x;
+    float e_trt = exp((-0.5 * _e55));
+    float _e60 = weft_hair_sqr((e_trt * e_trt));
+    vec3 _e63 = hair.inv_v;
+    float _e67 = weft_hair_sqr((_e60 * _e60));
+    hair.mp_norm = (_e63 / (vec3(1.0) - vec3(_e60, _e67, e_trt)));
+    float _e73 = hair.s;
+    float d_1 = (0.8162094 * _e73);
+    hair.blur = vec2(sin(d_1), cos(d_1));
+    float _e81 = hair.s;
+    float _e84 = weft_hair_sqr((0.4534 * _e81));
+    hair.r_floor = _e84;
+    float sh_1 = hair.s;
+    hair.trt = vec4((-9.2609 + (sh_1 * (65.993 - (107.38 * sh_1)))), (72.357 + (sh_1 * (-624.68 + (1069.8 * sh_1)))), (-153.75 + (sh_1 * (1704.7 - (3127.5 * sh_1)))), (-67.745 + (sh_1 * (-1105.8 + (2706.6 * sh_1)))));
+    hair.trt4_ = (239.74 - (430.94 * sh_1));
+    WeftHair _e122 = hair;
+    return _e122;
 }
 
 float weft_hair_i0_(float x_2) {
@@ -332,15 +377,15 @@ float weft_hair_etap(WeftHair hair_2, float sin_o_2, float cos_o_2) {
     return (sqrt(((hair_2.eta * hair_2.eta) - (sin_o_2 * sin_o_2))) / max(cos_o_2, 0.0001));
 }
 
-WeftHairAttenuation weft_hair_attenuation(WeftHair hair_3, float sin_o_3, float cos_o_3, float h) {
+WeftHairAttenuation weft_hair_attenuation(WeftHair hair_3, float sin_o_3, float cos_o_3, float h_1) {
     WeftHairAttenuation a = WeftHairAttenuation(0.0, vec3(0.0), vec3(0.0), vec3(0.0), 0.0);
     float sin_t = (sin_o_3 / hair_3.eta);
     float _e9 = weft_hair_safe_sqrt((1.0 - (sin_t * sin_t)));
     float _e10 = weft_hair_etap(hair_3, sin_o_3, cos_o_3);
-    float sin_gamma_t = clamp((h / _e10), -1.0, 1.0);
+    float sin_gamma_t = clamp((h_1 / _e10), -1.0, 1.0);
     float _e18 = weft_hair_safe_sqrt((1.0 - (sin_gamma_t * sin_gamma_t)));
     vec3 t_2 = exp((-(hair_3.sigma_a) * ((2.0 * _e18) / max(_e9, 0.0001))));
-    float _e31 = weft_hair_safe_sqrt((1.0 - (h * h)));
+    float _e31 = weft_hair_safe_sqrt((1.0 - (h_1 * h_1)));
     float _e34 = weft_f_dielectric((cos_o_3 * _e31), hair_3.eta);
     a.a0_ = _e34;
     a.a1_ = (((1.0 - _e34) * (1.0 - _e34)) * t_2);
@@ -478,6 +523,11 @@ WeftHairLobes weft_hair_mean(WeftHair hair_4, WeftHairAngles angles, uint count)
     return _e172;
 }
 
+WeftHair hair_from_varyings(HairVaryings in_3, vec3 sigma_a_1) {
+    float v_2 = in_3.fibre.z;
+    return WeftHair(max(sigma_a_1, vec3(0.0)), in_3.fibre.x, vec4(v_2, (0.25 * v_2), (4.0 * v_2), (4.0 * v_2)), in_3.fibre.y, in_3.sin2k.xyz, in_3.cos2k.xyz, in_3.inv_v.xyz, in_3.mp_norm.xyz, vec2(in_3.cos2k.w, in_3.mp_norm.w), in_3.sin2k.w, vec4(in_3.inv_v.w, in_3.trt.xyz), in_3.trt.w);
+}
+
 vec3 hair_strand(mat3x3 frame, vec2 uv0_) {
     vec2 ts = vec2(0.0);
     uint _e10 = _group_1_binding_0_fs.strand_along_tangent;
@@ -528,7 +578,7 @@ float hair_jitter(vec2 uv0_1) {
 }
 
 void main() {
-    WeftVaryings in_1 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
+    HairVaryings in_1 = HairVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3, _vs2fs_location4, _vs2fs_location5, _vs2fs_location6, _vs2fs_location7, _vs2fs_location8, _vs2fs_location9);
     vec3 color = vec3(0.0);
     WeftHairLobes lobes = WeftHairLobes(vec3(0.0), vec3(0.0), vec3(0.0));
     vec4 _e4 = _group_1_binding_0_fs.base_map_st;
@@ -539,7 +589,7 @@ void main() {
     vec3 base = clamp(base_rgba.xyz, vec3(0.0), vec3(1.0));
     float alpha = clamp(base_rgba.w, 0.0, 1.0);
     WeftSurface _e19 = weft_surface(in_1.world_position, in_1.world_normal);
-    vec3 v_2 = _e19.v;
+    vec3 v_3 = _e19.v;
     vec3 n_3 = _e19.n;
     mat3x3 _e23 = weft_tangent_frame(n_3, in_1.world_tangent);
     vec3 _e25 = hair_strand(_e23, in_1.uv0_);
@@ -550,28 +600,23 @@ void main() {
     float n_dot_l = dot(n_3, _e28);
     {
         vec3 _e35 = weft_safe_normalize((_e25 + (_e27 * n_3)), _e25);
-        float _e38 = _group_1_binding_0_fs.azimuthal_roughness;
-        vec3 _e39 = weft_hair_sigma_a_from_color(base, _e38);
-        float _e42 = _group_1_binding_0_fs.ior;
-        float _e45 = _group_1_binding_0_fs.roughness;
-        float _e48 = _group_1_binding_0_fs.azimuthal_roughness;
-        float _e51 = _group_1_binding_0_fs.scale_angle;
-        WeftHair _e52 = weft_hair_params(_e39, _e42, _e45, _e48, _e51);
-        WeftHairAngles _e53 = weft_hair_angles(_e35, v_2, _e28);
+        vec3 _e38 = weft_hair_sigma_a_scaled(base, in_1.fibre.w);
+        WeftHair _e39 = hair_from_varyings(in_1, _e38);
+        WeftHairAngles _e40 = weft_hair_angles(_e35, v_3, _e28);
         {
-            WeftHairLobes _e56 = weft_hair_mean(_e52, _e53, HAIR_REFERENCE_CELLS);
-            lobes = _e56;
+            WeftHairLobes _e43 = weft_hair_mean(_e39, _e40, HAIR_REFERENCE_CELLS);
+            lobes = _e43;
         }
         float body = smoothstep(-0.25, HAIR_TERMINATOR, n_dot_l);
+        vec3 _e50 = lobes.back;
+        vec3 multiple = (base * (vec3(1.0) - _e50));
+        vec3 _e54 = lobes.s;
+        vec3 direct = ((_e54 * body) + (multiple * (WEFT_INV_PI * clamp(n_dot_l, 0.0, 1.0))));
         vec3 _e63 = lobes.back;
-        vec3 multiple = (base * (vec3(1.0) - _e63));
-        vec3 _e67 = lobes.s;
-        vec3 direct = ((_e67 * body) + (multiple * (WEFT_INV_PI * clamp(n_dot_l, 0.0, 1.0))));
-        vec3 _e76 = lobes.back;
-        color = ((direct * _e29) + (_e30 * (multiple + _e76)));
+        color = ((direct * _e29) + (_e30 * (multiple + _e63)));
     }
-    vec3 _e80 = color;
-    vec3 radiance = clamp(_e80, vec3(0.0), vec3(65504.0));
+    vec3 _e67 = color;
+    vec3 radiance = clamp(_e67, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

@@ -78,6 +78,12 @@ struct WeftHair {
     s: f32,
     sin2k: vec3<f32>,
     cos2k: vec3<f32>,
+    inv_v: vec3<f32>,
+    mp_norm: vec3<f32>,
+    blur: vec2<f32>,
+    r_floor: f32,
+    trt: vec4<f32>,
+    trt4_: f32,
 }
 
 struct WeftHairAttenuation {
@@ -97,6 +103,20 @@ struct WeftHairLobes {
 struct WeftHairAngles {
     theta: vec4<f32>,
     phi: f32,
+}
+
+struct HairVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+    @location(0) world_position: vec3<f32>,
+    @location(1) world_normal: vec3<f32>,
+    @location(2) world_tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+    @location(4) @interpolate(flat) fibre: vec4<f32>,
+    @location(5) @interpolate(flat) sin2k: vec4<f32>,
+    @location(6) @interpolate(flat) cos2k: vec4<f32>,
+    @location(7) @interpolate(flat) mp_norm: vec4<f32>,
+    @location(8) @interpolate(flat) inv_v: vec4<f32>,
+    @location(9) @interpolate(flat) trt: vec4<f32>,
 }
 
 const WEFT_PI: f32 = 3.1415927f;
@@ -263,11 +283,15 @@ fn weft_hair_logistic_scale(beta_n: f32) -> f32 {
     return (0.62665707f * (((0.265f * b_4) + (1.194f * b2_1)) + (5.372f * b22_)));
 }
 
-fn weft_hair_sigma_a_from_color(c: vec3<f32>, beta_n_1: f32) -> vec3<f32> {
+fn weft_hair_sigma_a_scaled(c: vec3<f32>, scale_1: f32) -> vec3<f32> {
+    let l = (log(clamp(c, vec3(0.0001f), vec3(1f))) * scale_1);
+    return (l * l);
+}
+
+fn weft_hair_sigma_a_scale(beta_n_1: f32) -> f32 {
     let b_5 = clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1f);
     let d = (((((5.969f - (0.215f * b_5)) + ((2.532f * b_5) * b_5)) - (10.73f * pow(b_5, 3f))) + (5.574f * pow(b_5, 4f))) + (0.245f * pow(b_5, 5f)));
-    let l = (log(clamp(c, vec3(0.0001f), vec3(1f))) / vec3(d));
-    return (l * l);
+    return (1f / d);
 }
 
 fn weft_hair_params(sigma_a: vec3<f32>, eta_1: f32, beta_m_1: f32, beta_n_2: f32, alpha_deg: f32) -> WeftHair {
@@ -288,8 +312,24 @@ fn weft_hair_params(sigma_a: vec3<f32>, eta_1: f32, beta_m_1: f32, beta_n_2: f32
     let c2_ = ((c1_ * c1_) - (s1_ * s1_));
     hair.sin2k = vec3<f32>(s0_, s1_, s2_);
     hair.cos2k = vec3<f32>(_e29, c1_, c2_);
-    let _e46 = hair;
-    return _e46;
+    hair.inv_v = (vec3<f32>(1f, 4f, 0.25f) / vec3(_e13));
+    let _e55 = hair.inv_v.x;
+    let e_trt = exp((-0.5f * _e55));
+    let _e60 = weft_hair_sqr((e_trt * e_trt));
+    let _e63 = hair.inv_v;
+    let _e67 = weft_hair_sqr((_e60 * _e60));
+    hair.mp_norm = (_e63 / (vec3(1f) - vec3<f32>(_e60, _e67, e_trt)));
+    let _e73 = hair.s;
+    let d_1 = (0.8162094f * _e73);
+    hair.blur = vec2<f32>(sin(d_1), cos(d_1));
+    let _e81 = hair.s;
+    let _e84 = weft_hair_sqr((0.4534f * _e81));
+    hair.r_floor = _e84;
+    let sh_1 = hair.s;
+    hair.trt = vec4<f32>((-9.2609f + (sh_1 * (65.993f - (107.38f * sh_1)))), (72.357f + (sh_1 * (-624.68f + (1069.8f * sh_1)))), (-153.75f + (sh_1 * (1704.7f - (3127.5f * sh_1)))), (-67.745f + (sh_1 * (-1105.8f + (2706.6f * sh_1)))));
+    hair.trt4_ = (239.74f - (430.94f * sh_1));
+    let _e122 = hair;
+    return _e122;
 }
 
 fn weft_hair_i0_(x_2: f32) -> f32 {
@@ -372,16 +412,16 @@ fn weft_hair_etap(hair_2: WeftHair, sin_o_2: f32, cos_o_2: f32) -> f32 {
     return (sqrt(((hair_2.eta * hair_2.eta) - (sin_o_2 * sin_o_2))) / max(cos_o_2, 0.0001f));
 }
 
-fn weft_hair_attenuation(hair_3: WeftHair, sin_o_3: f32, cos_o_3: f32, h: f32) -> WeftHairAttenuation {
+fn weft_hair_attenuation(hair_3: WeftHair, sin_o_3: f32, cos_o_3: f32, h_1: f32) -> WeftHairAttenuation {
     var a: WeftHairAttenuation;
 
     let sin_t = (sin_o_3 / hair_3.eta);
     let _e9 = weft_hair_safe_sqrt((1f - (sin_t * sin_t)));
     let _e10 = weft_hair_etap(hair_3, sin_o_3, cos_o_3);
-    let sin_gamma_t = clamp((h / _e10), -1f, 1f);
+    let sin_gamma_t = clamp((h_1 / _e10), -1f, 1f);
     let _e18 = weft_hair_safe_sqrt((1f - (sin_gamma_t * sin_gamma_t)));
     let t_2 = exp((-(hair_3.sigma_a) * ((2f * _e18) / max(_e9, 0.0001f))));
-    let _e31 = weft_hair_safe_sqrt((1f - (h * h)));
+    let _e31 = weft_hair_safe_sqrt((1f - (h_1 * h_1)));
     let _e34 = weft_f_dielectric((cos_o_3 * _e31), hair_3.eta);
     a.a0_ = _e34;
     a.a1_ = (((1f - _e34) * (1f - _e34)) * t_2);
@@ -520,6 +560,11 @@ fn weft_hair_mean(hair_4: WeftHair, angles: WeftHairAngles, count: u32) -> WeftH
     return _e172;
 }
 
+fn hair_from_varyings(in_4: HairVaryings, sigma_a_1: vec3<f32>) -> WeftHair {
+    let v_2 = in_4.fibre.z;
+    return WeftHair(max(sigma_a_1, vec3(0f)), in_4.fibre.x, vec4<f32>(v_2, (0.25f * v_2), (4f * v_2), (4f * v_2)), in_4.fibre.y, in_4.sin2k.xyz, in_4.cos2k.xyz, in_4.inv_v.xyz, in_4.mp_norm.xyz, vec2<f32>(in_4.cos2k.w, in_4.mp_norm.w), in_4.sin2k.w, vec4<f32>(in_4.inv_v.w, in_4.trt.xyz), in_4.trt.w);
+}
+
 fn hair_strand(frame: mat3x3<f32>, uv0_: vec2<f32>) -> vec3<f32> {
     var ts: vec2<f32>;
 
@@ -619,13 +664,41 @@ fn fs_outline() -> @location(0) vec4<f32> {
 }
 
 @vertex 
-fn vs_main(in_1: WeftVertexInput) -> WeftVaryings {
+fn vs_hair(in_1: WeftVertexInput) -> HairVaryings {
+    var h: WeftHair;
+    var scale: f32 = 0f;
+
     let _e1 = weft_forward_vertex(in_1);
-    return _e1;
+    let _e6 = material.ior;
+    let _e9 = material.roughness;
+    let _e12 = material.azimuthal_roughness;
+    let _e15 = material.scale_angle;
+    let _e16 = weft_hair_params(vec3(0f), _e6, _e9, _e12, _e15);
+    h = _e16;
+    {
+        let _e22 = material.azimuthal_roughness;
+        let _e23 = weft_hair_sigma_a_scale(_e22);
+        scale = _e23;
+    }
+    let _e30 = h.eta;
+    let _e32 = h.s;
+    let _e35 = h.v.x;
+    let _e36 = scale;
+    let _e39 = h.sin2k;
+    let _e41 = h.r_floor;
+    let _e44 = h.cos2k;
+    let _e47 = h.blur.x;
+    let _e50 = h.mp_norm;
+    let _e53 = h.blur.y;
+    let _e56 = h.inv_v;
+    let _e59 = h.trt.x;
+    let _e62 = h.trt;
+    let _e65 = h.trt4_;
+    return HairVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, vec4<f32>(_e30, _e32, _e35, _e36), vec4<f32>(_e39, _e41), vec4<f32>(_e44, _e47), vec4<f32>(_e50, _e53), vec4<f32>(_e56, _e59), vec4<f32>(_e62.yzw, _e65));
 }
 
 @fragment 
-fn fs_main(in_2: WeftVaryings) -> @location(0) vec4<f32> {
+fn fs_main(in_2: HairVaryings) -> @location(0) vec4<f32> {
     var color: vec3<f32>;
     var lobes: WeftHairLobes;
 
@@ -637,7 +710,7 @@ fn fs_main(in_2: WeftVaryings) -> @location(0) vec4<f32> {
     let base = saturate(base_rgba.xyz);
     let alpha = saturate(base_rgba.w);
     let _e19 = weft_surface(in_2.world_position, in_2.world_normal);
-    let v_2 = _e19.v;
+    let v_3 = _e19.v;
     let n_3 = _e19.n;
     let _e23 = weft_tangent_frame(n_3, in_2.world_tangent);
     let _e25 = hair_strand(_e23, in_2.uv0_);
@@ -648,27 +721,22 @@ fn fs_main(in_2: WeftVaryings) -> @location(0) vec4<f32> {
     let n_dot_l = dot(n_3, _e28);
     {
         let _e35 = weft_safe_normalize((_e25 + (_e27 * n_3)), _e25);
-        let _e38 = material.azimuthal_roughness;
-        let _e39 = weft_hair_sigma_a_from_color(base, _e38);
-        let _e42 = material.ior;
-        let _e45 = material.roughness;
-        let _e48 = material.azimuthal_roughness;
-        let _e51 = material.scale_angle;
-        let _e52 = weft_hair_params(_e39, _e42, _e45, _e48, _e51);
-        let _e53 = weft_hair_angles(_e35, v_2, _e28);
+        let _e38 = weft_hair_sigma_a_scaled(base, in_2.fibre.w);
+        let _e39 = hair_from_varyings(in_2, _e38);
+        let _e40 = weft_hair_angles(_e35, v_3, _e28);
         {
-            let _e56 = weft_hair_mean(_e52, _e53, HAIR_REFERENCE_CELLS);
-            lobes = _e56;
+            let _e43 = weft_hair_mean(_e39, _e40, HAIR_REFERENCE_CELLS);
+            lobes = _e43;
         }
         let body = smoothstep(-0.25f, HAIR_TERMINATOR, n_dot_l);
+        let _e50 = lobes.back;
+        let multiple = (base * (vec3(1f) - _e50));
+        let _e54 = lobes.s;
+        let direct = ((_e54 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
         let _e63 = lobes.back;
-        let multiple = (base * (vec3(1f) - _e63));
-        let _e67 = lobes.s;
-        let direct = ((_e67 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
-        let _e76 = lobes.back;
-        color = ((direct * _e29) + (_e30 * (multiple + _e76)));
+        color = ((direct * _e29) + (_e30 * (multiple + _e63)));
     }
-    let _e80 = color;
-    let radiance = clamp(_e80, vec3(0f), vec3(65504f));
+    let _e67 = color;
+    let radiance = clamp(_e67, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

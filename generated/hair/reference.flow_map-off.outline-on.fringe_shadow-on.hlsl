@@ -102,7 +102,19 @@ struct WeftHair {
     float3 sin2k;
     int _pad5_0;
     float3 cos2k;
+    int _pad6_0;
+    float3 inv_v;
+    int _pad7_0;
+    float3 mp_norm;
+    int _pad8_0;
+    float2 blur;
+    float r_floor;
+    int _pad10_0;
+    float4 trt;
+    float trt4_;
     int _end_pad_0;
+    int _end_pad_1;
+    int _end_pad_2;
 };
 
 struct WeftHairAttenuation {
@@ -133,6 +145,20 @@ struct WeftHairAngles {
     int _end_pad_0;
     int _end_pad_1;
     int _end_pad_2;
+};
+
+struct HairVaryings {
+    float4 clip_position : SV_Position;
+    float3 world_position : LOC0;
+    float3 world_normal : LOC1;
+    float4 world_tangent : LOC2;
+    float2 uv0_ : LOC3;
+    nointerpolation float4 fibre : LOC4;
+    nointerpolation float4 sin2k : LOC5;
+    nointerpolation float4 cos2k : LOC6;
+    nointerpolation float4 mp_norm : LOC7;
+    nointerpolation float4 inv_v : LOC8;
+    nointerpolation float4 trt : LOC9;
 };
 
 static const float WEFT_PI = 3.1415927;
@@ -168,11 +194,17 @@ struct VertexOutput_vs_fringe_shadow {
     float4 clip_position_1 : SV_Position;
 };
 
-struct VertexOutput_vs_main {
+struct VertexOutput_vs_hair {
     float3 world_position_2 : LOC0;
     float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_2 : LOC3;
+    nointerpolation float4 fibre : LOC4;
+    nointerpolation float4 sin2k : LOC5;
+    nointerpolation float4 cos2k : LOC6;
+    nointerpolation float4 mp_norm : LOC7;
+    nointerpolation float4 inv_v : LOC8;
+    nointerpolation float4 trt : LOC9;
     float4 clip_position_2 : SV_Position;
 };
 
@@ -181,6 +213,12 @@ struct FragmentInput_fs_main {
     float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_3 : LOC3;
+    nointerpolation float4 fibre_1 : LOC4;
+    nointerpolation float4 sin2k_1 : LOC5;
+    nointerpolation float4 cos2k_1 : LOC6;
+    nointerpolation float4 mp_norm_1 : LOC7;
+    nointerpolation float4 inv_v_1 : LOC8;
+    nointerpolation float4 trt_1 : LOC9;
     float4 clip_position_3 : SV_Position;
 };
 
@@ -343,12 +381,17 @@ float weft_hair_logistic_scale(float beta_n)
     return (0.62665707 * (((0.265 * b_4) + (1.194 * b2_1)) + (5.372 * b22_)));
 }
 
-float3 weft_hair_sigma_a_from_color(float3 c, float beta_n_1)
+float3 weft_hair_sigma_a_scaled(float3 c, float scale_1)
+{
+    float3 l = (log(clamp(c, (0.0001).xxx, (1.0).xxx)) * scale_1);
+    return (l * l);
+}
+
+float weft_hair_sigma_a_scale(float beta_n_1)
 {
     float b_5 = clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1.0);
     float d = (((((5.969 - (0.215 * b_5)) + ((2.532 * b_5) * b_5)) - (10.73 * pow(b_5, 3.0))) + (5.574 * pow(b_5, 4.0))) + (0.245 * pow(b_5, 5.0)));
-    float3 l = (log(clamp(c, (0.0001).xxx, (1.0).xxx)) / (d).xxx);
-    return (l * l);
+    return (1.0 / d);
 }
 
 WeftHair weft_hair_params(float3 sigma_a, float eta_1, float beta_m_1, float beta_n_2, float alpha_deg)
@@ -370,8 +413,24 @@ WeftHair weft_hair_params(float3 sigma_a, float eta_1, float beta_m_1, float bet
     float c2_ = ((c1_ * c1_) - (s1_ * s1_));
     hair.sin2k = float3(s0_, s1_, s2_);
     hair.cos2k = float3(_e29, c1_, c2_);
-    WeftHair _e46 = hair;
-    const WeftHair wefthair = _e46;
+    hair.inv_v = (float3(1.0, 4.0, 0.25) / (_e13).xxx);
+    float _e55 = hair.inv_v.x;
+    float e_trt = exp((-0.5 * _e55));
+    const float _e60 = weft_hair_sqr((e_trt * e_trt));
+    float3 _e63 = hair.inv_v;
+    const float _e67 = weft_hair_sqr((_e60 * _e60));
+    hair.mp_norm = (_e63 / ((1.0).xxx - float3(_e60, _e67, e_trt)));
+    float _e73 = hair.s;
+    float d_1 = (0.8162094 * _e73);
+    hair.blur = float2(sin(d_1), cos(d_1));
+    float _e81 = hair.s;
+    const float _e84 = weft_hair_sqr((0.4534 * _e81));
+    hair.r_floor = _e84;
+    float sh_1 = hair.s;
+    hair.trt = float4((-9.2609 + (sh_1 * (65.993 - (107.38 * sh_1)))), (72.357 + (sh_1 * (-624.68 + (1069.8 * sh_1)))), (-153.75 + (sh_1 * (1704.7 - (3127.5 * sh_1)))), (-67.745 + (sh_1 * (-1105.8 + (2706.6 * sh_1)))));
+    hair.trt4_ = (239.74 - (430.94 * sh_1));
+    WeftHair _e122 = hair;
+    const WeftHair wefthair = _e122;
     return wefthair;
 }
 
@@ -467,17 +526,17 @@ float weft_hair_etap(WeftHair hair_2, float sin_o_2, float cos_o_2)
     return (sqrt(((hair_2.eta * hair_2.eta) - (sin_o_2 * sin_o_2))) / max(cos_o_2, 0.0001));
 }
 
-WeftHairAttenuation weft_hair_attenuation(WeftHair hair_3, float sin_o_3, float cos_o_3, float h)
+WeftHairAttenuation weft_hair_attenuation(WeftHair hair_3, float sin_o_3, float cos_o_3, float h_1)
 {
     WeftHairAttenuation a = (WeftHairAttenuation)0;
 
     float sin_t = (sin_o_3 / hair_3.eta);
     const float _e9 = weft_hair_safe_sqrt((1.0 - (sin_t * sin_t)));
     const float _e10 = weft_hair_etap(hair_3, sin_o_3, cos_o_3);
-    float sin_gamma_t = clamp((h / _e10), -1.0, 1.0);
+    float sin_gamma_t = clamp((h_1 / _e10), -1.0, 1.0);
     const float _e18 = weft_hair_safe_sqrt((1.0 - (sin_gamma_t * sin_gamma_t)));
     float3 t_2 = exp((-(hair_3.sigma_a) * ((2.0 * _e18) / max(_e9, 0.0001))));
-    const float _e31 = weft_hair_safe_sqrt((1.0 - (h * h)));
+    const float _e31 = weft_hair_safe_sqrt((1.0 - (h_1 * h_1)));
     const float _e34 = weft_f_dielectric((cos_o_3 * _e31), hair_3.eta);
     a.a0_ = _e34;
     a.a1_ = (((1.0 - _e34) * (1.0 - _e34)) * t_2);
@@ -629,6 +688,30 @@ WeftHairLobes weft_hair_mean(WeftHair hair_4, WeftHairAngles angles, uint count)
     return wefthairlobes;
 }
 
+WeftHair ConstructWeftHair(float3 arg0, float arg1, float4 arg2, float arg3, float3 arg4, float3 arg5, float3 arg6, float3 arg7, float2 arg8, float arg9, float4 arg10, float arg11) {
+    WeftHair ret = (WeftHair)0;
+    ret.sigma_a = arg0;
+    ret.eta = arg1;
+    ret.v = arg2;
+    ret.s = arg3;
+    ret.sin2k = arg4;
+    ret.cos2k = arg5;
+    ret.inv_v = arg6;
+    ret.mp_norm = arg7;
+    ret.blur = arg8;
+    ret.r_floor = arg9;
+    ret.trt = arg10;
+    ret.trt4_ = arg11;
+    return ret;
+}
+
+WeftHair hair_from_varyings(HairVaryings in_5, float3 sigma_a_1)
+{
+    float v_2 = in_5.fibre.z;
+    const WeftHair wefthair_1 = ConstructWeftHair(max(sigma_a_1, (0.0).xxx), in_5.fibre.x, float4(v_2, (0.25 * v_2), (4.0 * v_2), (4.0 * v_2)), in_5.fibre.y, in_5.sin2k.xyz, in_5.cos2k.xyz, in_5.inv_v.xyz, in_5.mp_norm.xyz, float2(in_5.cos2k.w, in_5.mp_norm.w), in_5.sin2k.w, float4(in_5.inv_v.w, in_5.trt.xyz), in_5.trt.w);
+    return wefthair_1;
+}
+
 float3 hair_strand(float3x3 frame, float2 uv0_)
 {
     float2 ts = (float2)0;
@@ -774,17 +857,61 @@ float4 fs_fringe_shadow() : SV_Target0
     return float4(max(_e2.xyz, (0.0).xxx), 1.0);
 }
 
-VertexOutput_vs_main vs_main(WeftVertexInput in_2)
+HairVaryings ConstructHairVaryings(float4 arg0, float3 arg1, float3 arg2, float4 arg3, float2 arg4, float4 arg5, float4 arg6, float4 arg7, float4 arg8, float4 arg9, float4 arg10) {
+    HairVaryings ret = (HairVaryings)0;
+    ret.clip_position = arg0;
+    ret.world_position = arg1;
+    ret.world_normal = arg2;
+    ret.world_tangent = arg3;
+    ret.uv0_ = arg4;
+    ret.fibre = arg5;
+    ret.sin2k = arg6;
+    ret.cos2k = arg7;
+    ret.mp_norm = arg8;
+    ret.inv_v = arg9;
+    ret.trt = arg10;
+    return ret;
+}
+
+VertexOutput_vs_hair vs_hair(WeftVertexInput in_2)
 {
+    WeftHair h = (WeftHair)0;
+    float scale = 0.0;
+
     const WeftVaryings _e1 = weft_forward_vertex(in_2);
-    const WeftVaryings weftvaryings_1 = _e1;
-    const VertexOutput_vs_main weftvaryings_1_ = { weftvaryings_1.world_position, weftvaryings_1.world_normal, weftvaryings_1.world_tangent, weftvaryings_1.uv0_, weftvaryings_1.clip_position };
-    return weftvaryings_1_;
+    float _e6 = material.ior;
+    float _e9 = material.roughness;
+    float _e12 = material.azimuthal_roughness;
+    float _e15 = material.scale_angle;
+    const WeftHair _e16 = weft_hair_params((0.0).xxx, _e6, _e9, _e12, _e15);
+    h = _e16;
+    {
+        float _e22 = material.azimuthal_roughness;
+        const float _e23 = weft_hair_sigma_a_scale(_e22);
+        scale = _e23;
+    }
+    float _e30 = h.eta;
+    float _e32 = h.s;
+    float _e35 = h.v.x;
+    float _e36 = scale;
+    float3 _e39 = h.sin2k;
+    float _e41 = h.r_floor;
+    float3 _e44 = h.cos2k;
+    float _e47 = h.blur.x;
+    float3 _e50 = h.mp_norm;
+    float _e53 = h.blur.y;
+    float3 _e56 = h.inv_v;
+    float _e59 = h.trt.x;
+    float4 _e62 = h.trt;
+    float _e65 = h.trt4_;
+    const HairVaryings hairvaryings = ConstructHairVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, float4(_e30, _e32, _e35, _e36), float4(_e39, _e41), float4(_e44, _e47), float4(_e50, _e53), float4(_e56, _e59), float4(_e62.yzw, _e65));
+    const VertexOutput_vs_hair hairvaryings_1 = { hairvaryings.world_position, hairvaryings.world_normal, hairvaryings.world_tangent, hairvaryings.uv0_, hairvaryings.fibre, hairvaryings.sin2k, hairvaryings.cos2k, hairvaryings.mp_norm, hairvaryings.inv_v, hairvaryings.trt, hairvaryings.clip_position };
+    return hairvaryings_1;
 }
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_3 = { fragmentinput_fs_main.clip_position_3, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_3 };
+    HairVaryings in_3 = { fragmentinput_fs_main.clip_position_3, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_3, fragmentinput_fs_main.fibre_1, fragmentinput_fs_main.sin2k_1, fragmentinput_fs_main.cos2k_1, fragmentinput_fs_main.mp_norm_1, fragmentinput_fs_main.inv_v_1, fragmentinput_fs_main.trt_1 };
     float3 color = (float3)0;
     WeftHairLobes lobes = (WeftHairLobes)0;
 
@@ -796,7 +923,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 base = saturate(base_rgba.xyz);
     float alpha = saturate(base_rgba.w);
     const WeftSurface _e19 = weft_surface(in_3.world_position, in_3.world_normal);
-    float3 v_2 = _e19.v;
+    float3 v_3 = _e19.v;
     float3 n_3 = _e19.n;
     const float3x3 _e23 = weft_tangent_frame(n_3, in_3.world_tangent);
     const float3 _e25 = hair_strand(_e23, in_3.uv0_);
@@ -807,27 +934,22 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float n_dot_l = dot(n_3, _e28);
     {
         const float3 _e35 = weft_safe_normalize((_e25 + (_e27 * n_3)), _e25);
-        float _e38 = material.azimuthal_roughness;
-        const float3 _e39 = weft_hair_sigma_a_from_color(base, _e38);
-        float _e42 = material.ior;
-        float _e45 = material.roughness;
-        float _e48 = material.azimuthal_roughness;
-        float _e51 = material.scale_angle;
-        const WeftHair _e52 = weft_hair_params(_e39, _e42, _e45, _e48, _e51);
-        const WeftHairAngles _e53 = weft_hair_angles(_e35, v_2, _e28);
+        const float3 _e38 = weft_hair_sigma_a_scaled(base, in_3.fibre.w);
+        const WeftHair _e39 = hair_from_varyings(in_3, _e38);
+        const WeftHairAngles _e40 = weft_hair_angles(_e35, v_3, _e28);
         {
-            const WeftHairLobes _e56 = weft_hair_mean(_e52, _e53, HAIR_REFERENCE_CELLS);
-            lobes = _e56;
+            const WeftHairLobes _e43 = weft_hair_mean(_e39, _e40, HAIR_REFERENCE_CELLS);
+            lobes = _e43;
         }
         float body = smoothstep(-0.25, HAIR_TERMINATOR, n_dot_l);
+        float3 _e50 = lobes.back;
+        float3 multiple = (base * ((1.0).xxx - _e50));
+        float3 _e54 = lobes.s;
+        float3 direct = ((_e54 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
         float3 _e63 = lobes.back;
-        float3 multiple = (base * ((1.0).xxx - _e63));
-        float3 _e67 = lobes.s;
-        float3 direct = ((_e67 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
-        float3 _e76 = lobes.back;
-        color = ((direct * _e29) + (_e30 * (multiple + _e76)));
+        color = ((direct * _e29) + (_e30 * (multiple + _e63)));
     }
-    float3 _e80 = color;
-    float3 radiance = clamp(_e80, (0.0).xxx, (65504.0).xxx);
+    float3 _e67 = color;
+    float3 radiance = clamp(_e67, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

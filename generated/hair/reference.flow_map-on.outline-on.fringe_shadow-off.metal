@@ -87,6 +87,14 @@ struct WeftHair {
     char _pad4[12];
     metal::float3 sin2k;
     metal::float3 cos2k;
+    metal::float3 inv_v;
+    metal::float3 mp_norm;
+    metal::float2 blur;
+    float r_floor;
+    char _pad10[4];
+    metal::float4 trt;
+    float trt4_;
+    char _pad12[12];
 };
 struct WeftHairAttenuation {
     float a0_;
@@ -105,6 +113,20 @@ struct WeftHairAngles {
     metal::float4 theta;
     float phi;
     char _pad2[12];
+};
+struct HairVaryings {
+    metal::float4 clip_position;
+    metal::float3 world_position;
+    metal::float3 world_normal;
+    metal::float4 world_tangent;
+    metal::float2 uv0_;
+    char _pad5[8];
+    metal::float4 fibre;
+    metal::float4 sin2k;
+    metal::float4 cos2k;
+    metal::float4 mp_norm;
+    metal::float4 inv_v;
+    metal::float4 trt;
 };
 constant float WEFT_PI = 3.1415927;
 constant float WEFT_INV_PI = 0.31830987;
@@ -294,14 +316,20 @@ float weft_hair_logistic_scale(
     return 0.62665707 * (((0.265 * b_4) + (1.194 * b2_1)) + (5.372 * b22_));
 }
 
-metal::float3 weft_hair_sigma_a_from_color(
+metal::float3 weft_hair_sigma_a_scaled(
     metal::float3 c,
+    float scale_1
+) {
+    metal::float3 l = metal::log(metal::clamp(c, metal::float3(0.0001), metal::float3(1.0))) * scale_1;
+    return l * l;
+}
+
+float weft_hair_sigma_a_scale(
     float beta_n_1
 ) {
     float b_5 = metal::clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1.0);
     float d = ((((5.969 - (0.215 * b_5)) + ((2.532 * b_5) * b_5)) - (10.73 * metal::pow(b_5, 3.0))) + (5.574 * metal::pow(b_5, 4.0))) + (0.245 * metal::pow(b_5, 5.0));
-    metal::float3 l = metal::log(metal::clamp(c, metal::float3(0.0001), metal::float3(1.0))) / metal::float3(d);
-    return l * l;
+    return 1.0 / d;
 }
 
 WeftHair weft_hair_params(
@@ -327,8 +355,24 @@ WeftHair weft_hair_params(
     float c2_ = (c1_ * c1_) - (s1_ * s1_);
     hair.sin2k = metal::float3(s0_, s1_, s2_);
     hair.cos2k = metal::float3(_e29, c1_, c2_);
-    WeftHair _e46 = hair;
-    return _e46;
+    hair.inv_v = metal::float3(1.0, 4.0, 0.25) / metal::float3(_e13);
+    float _e55 = hair.inv_v.x;
+    float e_trt = metal::exp(-0.5 * _e55);
+    float _e60 = weft_hair_sqr(e_trt * e_trt);
+    metal::float3 _e63 = hair.inv_v;
+    float _e67 = weft_hair_sqr(_e60 * _e60);
+    hair.mp_norm = _e63 / (metal::float3(1.0) - metal::float3(_e60, _e67, e_trt));
+    float _e73 = hair.s;
+    float d_1 = 0.8162094 * _e73;
+    hair.blur = metal::float2(metal::sin(d_1), metal::cos(d_1));
+    float _e81 = hair.s;
+    float _e84 = weft_hair_sqr(0.4534 * _e81);
+    hair.r_floor = _e84;
+    float sh_1 = hair.s;
+    hair.trt = metal::float4(-9.2609 + (sh_1 * (65.993 - (107.38 * sh_1))), 72.357 + (sh_1 * (-624.68 + (1069.8 * sh_1))), -153.75 + (sh_1 * (1704.7 - (3127.5 * sh_1))), -67.745 + (sh_1 * (-1105.8 + (2706.6 * sh_1))));
+    hair.trt4_ = 239.74 - (430.94 * sh_1);
+    WeftHair _e122 = hair;
+    return _e122;
 }
 
 float weft_hair_i0_(
@@ -445,16 +489,16 @@ WeftHairAttenuation weft_hair_attenuation(
     WeftHair hair_3,
     float sin_o_3,
     float cos_o_3,
-    float h
+    float h_1
 ) {
     WeftHairAttenuation a = {};
     float sin_t = sin_o_3 / hair_3.eta;
     float _e9 = weft_hair_safe_sqrt(1.0 - (sin_t * sin_t));
     float _e10 = weft_hair_etap(hair_3, sin_o_3, cos_o_3);
-    float sin_gamma_t = metal::clamp(h / _e10, -1.0, 1.0);
+    float sin_gamma_t = metal::clamp(h_1 / _e10, -1.0, 1.0);
     float _e18 = weft_hair_safe_sqrt(1.0 - (sin_gamma_t * sin_gamma_t));
     metal::float3 t_2 = metal::exp(-(hair_3.sigma_a) * ((2.0 * _e18) / metal::max(_e9, 0.0001)));
-    float _e31 = weft_hair_safe_sqrt(1.0 - (h * h));
+    float _e31 = weft_hair_safe_sqrt(1.0 - (h_1 * h_1));
     float _e34 = weft_f_dielectric(cos_o_3 * _e31, hair_3.eta);
     a.a0_ = _e34;
     a.a1_ = ((1.0 - _e34) * (1.0 - _e34)) * t_2;
@@ -614,6 +658,14 @@ WeftHairLobes weft_hair_mean(
     return _e172;
 }
 
+WeftHair hair_from_varyings(
+    HairVaryings in_4,
+    metal::float3 sigma_a_1
+) {
+    float v_2 = in_4.fibre.z;
+    return WeftHair {metal::max(sigma_a_1, metal::float3(0.0)), in_4.fibre.x, metal::float4(v_2, 0.25 * v_2, 4.0 * v_2, 4.0 * v_2), in_4.fibre.y, {}, in_4.sin2k.xyz, in_4.cos2k.xyz, in_4.inv_v.xyz, in_4.mp_norm.xyz, metal::float2(in_4.cos2k.w, in_4.mp_norm.w), in_4.sin2k.w, {}, metal::float4(in_4.inv_v.w, in_4.trt.xyz), in_4.trt.w};
+}
+
 metal::float3 hair_strand(
     metal::float3x3 frame,
     metal::float2 uv0_,
@@ -757,28 +809,62 @@ fragment fs_outlineOutput fs_outline(
 }
 
 
-struct vs_mainInput {
+struct vs_hairInput {
     metal::float3 position [[attribute(0)]];
     metal::float3 normal [[attribute(1)]];
     metal::float4 tangent_1 [[attribute(2)]];
     metal::float2 uv0_2 [[attribute(3)]];
 };
-struct vs_mainOutput {
+struct vs_hairOutput {
     metal::float4 clip_position [[position]];
     metal::float3 world_position [[user(loc0), center_perspective]];
     metal::float3 world_normal [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
+    metal::float4 fibre [[user(loc4), flat]];
+    metal::float4 sin2k [[user(loc5), flat]];
+    metal::float4 cos2k [[user(loc6), flat]];
+    metal::float4 mp_norm [[user(loc7), flat]];
+    metal::float4 inv_v [[user(loc8), flat]];
+    metal::float4 trt [[user(loc9), flat]];
 };
-vertex vs_mainOutput vs_main(
-  vs_mainInput varyings_2 [[stage_in]]
+vertex vs_hairOutput vs_hair(
+  vs_hairInput varyings_2 [[stage_in]]
 , constant WeftFrame& weft_frame [[buffer(0)]]
 , constant WeftObject& weft_object [[buffer(2)]]
+, constant WeftMaterial& material [[buffer(1)]]
 ) {
     const WeftVertexInput in_1 = { varyings_2.position, varyings_2.normal, varyings_2.tangent_1, varyings_2.uv0_2 };
+    WeftHair h = {};
+    float scale = 0.0;
     WeftVaryings _e1 = weft_forward_vertex(in_1, weft_frame, weft_object);
-    const auto _tmp_1 = _e1;
-    return vs_mainOutput { _tmp_1.clip_position, _tmp_1.world_position, _tmp_1.world_normal, _tmp_1.world_tangent, _tmp_1.uv0_ };
+    float _e6 = material.ior;
+    float _e9 = material.roughness;
+    float _e12 = material.azimuthal_roughness;
+    float _e15 = material.scale_angle;
+    WeftHair _e16 = weft_hair_params(metal::float3(0.0), _e6, _e9, _e12, _e15);
+    h = _e16;
+    {
+        float _e22 = material.azimuthal_roughness;
+        float _e23 = weft_hair_sigma_a_scale(_e22);
+        scale = _e23;
+    }
+    float _e30 = h.eta;
+    float _e32 = h.s;
+    float _e35 = h.v.x;
+    float _e36 = scale;
+    metal::float3 _e39 = h.sin2k;
+    float _e41 = h.r_floor;
+    metal::float3 _e44 = h.cos2k;
+    float _e47 = h.blur.x;
+    metal::float3 _e50 = h.mp_norm;
+    float _e53 = h.blur.y;
+    metal::float3 _e56 = h.inv_v;
+    float _e59 = h.trt.x;
+    metal::float4 _e62 = h.trt;
+    float _e65 = h.trt4_;
+    const auto _tmp_1 = HairVaryings {_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, {}, metal::float4(_e30, _e32, _e35, _e36), metal::float4(_e39, _e41), metal::float4(_e44, _e47), metal::float4(_e50, _e53), metal::float4(_e56, _e59), metal::float4(_e62.yzw, _e65)};
+    return vs_hairOutput { _tmp_1.clip_position, _tmp_1.world_position, _tmp_1.world_normal, _tmp_1.world_tangent, _tmp_1.uv0_, _tmp_1.fibre, _tmp_1.sin2k, _tmp_1.cos2k, _tmp_1.mp_norm, _tmp_1.inv_v, _tmp_1.trt };
 }
 
 
@@ -787,6 +873,12 @@ struct fs_mainInput {
     metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_2 [[user(loc3), center_perspective]];
+    metal::float4 fibre [[user(loc4), flat]];
+    metal::float4 sin2k [[user(loc5), flat]];
+    metal::float4 cos2k [[user(loc6), flat]];
+    metal::float4 mp_norm [[user(loc7), flat]];
+    metal::float4 inv_v [[user(loc8), flat]];
+    metal::float4 trt [[user(loc9), flat]];
 };
 struct fs_mainOutput {
     metal::float4 member_3 [[color(0)]];
@@ -802,7 +894,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> jitter_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> uv_rotate_mask [[texture(3)]]
 ) {
-    const WeftVaryings in_2 = { clip_position, varyings_3.world_position_2, varyings_3.world_normal_1, varyings_3.world_tangent, varyings_3.uv0_2 };
+    const HairVaryings in_2 = { clip_position, varyings_3.world_position_2, varyings_3.world_normal_1, varyings_3.world_tangent, varyings_3.uv0_2, {}, varyings_3.fibre, varyings_3.sin2k, varyings_3.cos2k, varyings_3.mp_norm, varyings_3.inv_v, varyings_3.trt };
     metal::float3 color = {};
     WeftHairLobes lobes = {};
     metal::float4 _e4 = material.base_map_st;
@@ -813,7 +905,7 @@ fragment fs_mainOutput fs_main(
     metal::float3 base = metal::saturate(base_rgba.xyz);
     float alpha = metal::saturate(base_rgba.w);
     WeftSurface _e19 = weft_surface(in_2.world_position, in_2.world_normal, weft_frame);
-    metal::float3 v_2 = _e19.v;
+    metal::float3 v_3 = _e19.v;
     metal::float3 n_3 = _e19.n;
     metal::float3x3 _e23 = weft_tangent_frame(n_3, in_2.world_tangent);
     metal::float3 _e25 = hair_strand(_e23, in_2.uv0_, material, material_sampler, flow_map);
@@ -824,27 +916,22 @@ fragment fs_mainOutput fs_main(
     float n_dot_l = metal::dot(n_3, _e28);
     {
         metal::float3 _e35 = weft_safe_normalize(_e25 + (_e27 * n_3), _e25);
-        float _e38 = material.azimuthal_roughness;
-        metal::float3 _e39 = weft_hair_sigma_a_from_color(base, _e38);
-        float _e42 = material.ior;
-        float _e45 = material.roughness;
-        float _e48 = material.azimuthal_roughness;
-        float _e51 = material.scale_angle;
-        WeftHair _e52 = weft_hair_params(_e39, _e42, _e45, _e48, _e51);
-        WeftHairAngles _e53 = weft_hair_angles(_e35, v_2, _e28);
+        metal::float3 _e38 = weft_hair_sigma_a_scaled(base, in_2.fibre.w);
+        WeftHair _e39 = hair_from_varyings(in_2, _e38);
+        WeftHairAngles _e40 = weft_hair_angles(_e35, v_3, _e28);
         {
-            WeftHairLobes _e56 = weft_hair_mean(_e52, _e53, HAIR_REFERENCE_CELLS);
-            lobes = _e56;
+            WeftHairLobes _e43 = weft_hair_mean(_e39, _e40, HAIR_REFERENCE_CELLS);
+            lobes = _e43;
         }
         float body = metal::smoothstep(-0.25, HAIR_TERMINATOR, n_dot_l);
+        metal::float3 _e50 = lobes.back;
+        metal::float3 multiple = base * (metal::float3(1.0) - _e50);
+        metal::float3 _e54 = lobes.s;
+        metal::float3 direct = (_e54 * body) + (multiple * (WEFT_INV_PI * metal::saturate(n_dot_l)));
         metal::float3 _e63 = lobes.back;
-        metal::float3 multiple = base * (metal::float3(1.0) - _e63);
-        metal::float3 _e67 = lobes.s;
-        metal::float3 direct = (_e67 * body) + (multiple * (WEFT_INV_PI * metal::saturate(n_dot_l)));
-        metal::float3 _e76 = lobes.back;
-        color = (direct * _e29) + (_e30 * (multiple + _e76));
+        color = (direct * _e29) + (_e30 * (multiple + _e63));
     }
-    metal::float3 _e80 = color;
-    metal::float3 radiance = metal::clamp(_e80, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e67 = color;
+    metal::float3 radiance = metal::clamp(_e67, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

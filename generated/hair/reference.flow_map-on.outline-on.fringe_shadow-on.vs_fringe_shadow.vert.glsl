@@ -77,6 +77,12 @@ struct WeftHair {
     float s;
     vec3 sin2k;
     vec3 cos2k;
+    vec3 inv_v;
+    vec3 mp_norm;
+    vec2 blur;
+    float r_floor;
+    vec4 trt;
+    float trt4_;
 };
 struct WeftHairAttenuation {
     float a0_;
@@ -93,6 +99,19 @@ struct WeftHairLobes {
 struct WeftHairAngles {
     vec4 theta;
     float phi;
+};
+struct HairVaryings {
+    vec4 clip_position;
+    vec3 world_position;
+    vec3 world_normal;
+    vec4 world_tangent;
+    vec2 uv0_;
+    vec4 fibre;
+    vec4 sin2k;
+    vec4 cos2k;
+    vec4 mp_norm;
+    vec4 inv_v;
+    vec4 trt;
 };
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
@@ -249,15 +268,19 @@ float weft_hair_logistic_scale(float beta_n) {
     return (0.62665707 * (((0.265 * b_4) + (1.194 * b2_1)) + (5.372 * b22_)));
 }
 
-vec3 weft_hair_sigma_a_from_color(vec3 c, float beta_n_1) {
-    float b_5 = clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1.0);
-    float d = (((((5.969 - (0.215 * b_5)) + ((2.532 * b_5) * b_5)) - (10.73 * pow(b_5, 3.0))) + (5.574 * pow(b_5, 4.0))) + (0.245 * pow(b_5, 5.0)));
-    vec3 l = (log(clamp(c, vec3(0.0001), vec3(1.0))) / vec3(d));
+vec3 weft_hair_sigma_a_scaled(vec3 c, float scale_1) {
+    vec3 l = (log(clamp(c, vec3(0.0001), vec3(1.0))) * scale_1);
     return (l * l);
 }
 
+float weft_hair_sigma_a_scale(float beta_n_1) {
+    float b_5 = clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1.0);
+    float d = (((((5.969 - (0.215 * b_5)) + ((2.532 * b_5) * b_5)) - (10.73 * pow(b_5, 3.0))) + (5.574 * pow(b_5, 4.0))) + (0.245 * pow(b_5, 5.0)));
+    return (1.0 / d);
+}
+
 WeftHair weft_hair_params(vec3 sigma_a, float eta_1, float beta_m_1, float beta_n_2, float alpha_deg) {
-    WeftHair hair = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0));
+    WeftHair hair = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0, vec4(0.0), 0.0);
     hair.sigma_a = max(sigma_a, vec3(0.0));
     hair.eta = max(eta_1, 1.0001);
     float _e13 = weft_hair_variance(beta_m_1);
@@ -273,8 +296,24 @@ WeftHair weft_hair_params(vec3 sigma_a, float eta_1, float beta_m_1, float beta_
     float c2_ = ((c1_ * c1_) - (s1_ * s1_));
     hair.sin2k = vec3(s0_, s1_, s2_);
     hair.cos2k = vec3(_e29, c1_, c2_);
-    WeftHair _e46 = hair;
-    return _e46;
+    hair.inv_v = (vec3(1.0, 4.0, 0.25) / vec3(_e13));
+    float _e55 = hair.inv_v.x;
+    float e_trt = exp((-0.5 * _e55));
+    float _e60 = weft_hair_sqr((e_trt * e_trt));
+    vec3 _e63 = hair.inv_v;
+    float _e67 = weft_hair_sqr((_e60 * _e60));
+    hair.mp_norm = (_e63 / (vec3(1.0) - vec3(_e60, _e67, e_trt)));
+    float _e73 = hair.s;
+    float d_1 = (0.8162094 * _e73);
+    hair.blur = vec2(sin(d_1), cos(d_1));
+    float _e81 = hair.s;
+    float _e84 = weft_hair_sqr((0.4534 * _e81));
+    hair.r_floor = _e84;
+    float sh_1 = hair.s;
+    hair.trt = vec4((-9.2609 + (sh_1 * (65.993 - (107.38 * sh_1)))), (72.357 + (sh_1 * (-624.68 + (1069.8 * sh_1)))), (-153.75 + (sh_1 * (1704.7 - (3127.5 * sh_1)))), (-67.745 + (sh_1 * (-1105.8 + (2706.6 * sh_1)))));
+    hair.trt4_ = (239.74 - (430.94 * sh_1));
+    WeftHair _e122 = hair;
+    return _e122;
 }
 
 float weft_hair_i0_(float x_2) {
@@ -358,15 +397,15 @@ float weft_hair_etap(WeftHair hair_2, float sin_o_2, float cos_o_2) {
     return (sqrt(((hair_2.eta * hair_2.eta) - (sin_o_2 * sin_o_2))) / max(cos_o_2, 0.0001));
 }
 
-WeftHairAttenuation weft_hair_attenuation(WeftHair hair_3, float sin_o_3, float cos_o_3, float h) {
+WeftHairAttenuation weft_hair_attenuation(WeftHair hair_3, float sin_o_3, float cos_o_3, float h_1) {
     WeftHairAttenuation a = WeftHairAttenuation(0.0, vec3(0.0), vec3(0.0), vec3(0.0), 0.0);
     float sin_t = (sin_o_3 / hair_3.eta);
     float _e9 = weft_hair_safe_sqrt((1.0 - (sin_t * sin_t)));
     float _e10 = weft_hair_etap(hair_3, sin_o_3, cos_o_3);
-    float sin_gamma_t = clamp((h / _e10), -1.0, 1.0);
+    float sin_gamma_t = clamp((h_1 / _e10), -1.0, 1.0);
     float _e18 = weft_hair_safe_sqrt((1.0 - (sin_gamma_t * sin_gamma_t)));
     vec3 t_2 = exp((-(hair_3.sigma_a) * ((2.0 * _e18) / max(_e9, 0.0001))));
-    float _e31 = weft_hair_safe_sqrt((1.0 - (h * h)));
+    float _e31 = weft_hair_safe_sqrt((1.0 - (h_1 * h_1)));
     float _e34 = weft_f_dielectric((cos_o_3 * _e31), hair_3.eta);
     a.a0_ = _e34;
     a.a1_ = (((1.0 - _e34) * (1.0 - _e34)) * t_2);
@@ -502,6 +541,11 @@ WeftHairLobes weft_hair_mean(WeftHair hair_4, WeftHairAngles angles, uint count)
     out_4.back = (_e168 / vec3(_e169));
     WeftHairLobes _e172 = out_4;
     return _e172;
+}
+
+WeftHair hair_from_varyings(HairVaryings in_5, vec3 sigma_a_1) {
+    float v_2 = in_5.fibre.z;
+    return WeftHair(max(sigma_a_1, vec3(0.0)), in_5.fibre.x, vec4(v_2, (0.25 * v_2), (4.0 * v_2), (4.0 * v_2)), in_5.fibre.y, in_5.sin2k.xyz, in_5.cos2k.xyz, in_5.inv_v.xyz, in_5.mp_norm.xyz, vec2(in_5.cos2k.w, in_5.mp_norm.w), in_5.sin2k.w, vec4(in_5.inv_v.w, in_5.trt.xyz), in_5.trt.w);
 }
 
 float hair_hash(uint x_7) {

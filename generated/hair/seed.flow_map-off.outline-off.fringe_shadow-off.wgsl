@@ -62,10 +62,39 @@ struct WeftVaryings {
     @location(3) uv0_: vec2<f32>,
 }
 
+struct WeftHair {
+    sigma_a: vec3<f32>,
+    eta: f32,
+    v: vec4<f32>,
+    s: f32,
+    sin2k: vec3<f32>,
+    cos2k: vec3<f32>,
+    inv_v: vec3<f32>,
+    mp_norm: vec3<f32>,
+    blur: vec2<f32>,
+    r_floor: f32,
+    trt: vec4<f32>,
+    trt4_: f32,
+}
+
 struct WeftHairLobes {
     s: vec3<f32>,
     albedo: vec3<f32>,
     back: vec3<f32>,
+}
+
+struct HairVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+    @location(0) world_position: vec3<f32>,
+    @location(1) world_normal: vec3<f32>,
+    @location(2) world_tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+    @location(4) @interpolate(flat) fibre: vec4<f32>,
+    @location(5) @interpolate(flat) sin2k: vec4<f32>,
+    @location(6) @interpolate(flat) cos2k: vec4<f32>,
+    @location(7) @interpolate(flat) mp_norm: vec4<f32>,
+    @location(8) @interpolate(flat) inv_v: vec4<f32>,
+    @location(9) @interpolate(flat) trt: vec4<f32>,
 }
 
 const WEFT_PI: f32 = 3.1415927f;
@@ -195,6 +224,69 @@ fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
 
+fn weft_hair_sqr(x: f32) -> f32 {
+    return (x * x);
+}
+
+fn weft_hair_safe_sqrt(x_1: f32) -> f32 {
+    return sqrt(max(x_1, 0f));
+}
+
+fn weft_hair_variance(beta_m: f32) -> f32 {
+    let b_2 = clamp(beta_m, WEFT_HAIR_MIN_BETA_M, 1f);
+    let b2_ = (b_2 * b_2);
+    let b4_ = (b2_ * b2_);
+    let b20_ = ((((b4_ * b4_) * b4_) * b4_) * b4_);
+    let _e18 = weft_hair_sqr((((0.726f * b_2) + (0.812f * b2_)) + (3.7f * b20_)));
+    return _e18;
+}
+
+fn weft_hair_logistic_scale(beta_n: f32) -> f32 {
+    let b_3 = clamp(beta_n, WEFT_HAIR_MIN_BETA_N, 1f);
+    let b2_1 = (b_3 * b_3);
+    let b4_1 = (b2_1 * b2_1);
+    let b22_ = (((((b4_1 * b4_1) * b4_1) * b4_1) * b4_1) * b2_1);
+    return (0.62665707f * (((0.265f * b_3) + (1.194f * b2_1)) + (5.372f * b22_)));
+}
+
+fn weft_hair_params(sigma_a: vec3<f32>, eta: f32, beta_m_1: f32, beta_n_1: f32, alpha_deg: f32) -> WeftHair {
+    var hair: WeftHair;
+
+    hair.sigma_a = max(sigma_a, vec3(0f));
+    hair.eta = max(eta, 1.0001f);
+    let _e13 = weft_hair_variance(beta_m_1);
+    hair.v = vec4<f32>(_e13, (0.25f * _e13), (4f * _e13), (4f * _e13));
+    let _e23 = weft_hair_logistic_scale(beta_n_1);
+    hair.s = _e23;
+    let a_1 = radians(alpha_deg);
+    let s0_ = sin(a_1);
+    let _e29 = weft_hair_safe_sqrt((1f - (s0_ * s0_)));
+    let s1_ = ((2f * _e29) * s0_);
+    let c1_ = ((_e29 * _e29) - (s0_ * s0_));
+    let s2_ = ((2f * c1_) * s1_);
+    let c2_ = ((c1_ * c1_) - (s1_ * s1_));
+    hair.sin2k = vec3<f32>(s0_, s1_, s2_);
+    hair.cos2k = vec3<f32>(_e29, c1_, c2_);
+    hair.inv_v = (vec3<f32>(1f, 4f, 0.25f) / vec3(_e13));
+    let _e55 = hair.inv_v.x;
+    let e_trt = exp((-0.5f * _e55));
+    let _e60 = weft_hair_sqr((e_trt * e_trt));
+    let _e63 = hair.inv_v;
+    let _e67 = weft_hair_sqr((_e60 * _e60));
+    hair.mp_norm = (_e63 / (vec3(1f) - vec3<f32>(_e60, _e67, e_trt)));
+    let _e73 = hair.s;
+    let d = (0.8162094f * _e73);
+    hair.blur = vec2<f32>(sin(d), cos(d));
+    let _e81 = hair.s;
+    let _e84 = weft_hair_sqr((0.4534f * _e81));
+    hair.r_floor = _e84;
+    let sh_1 = hair.s;
+    hair.trt = vec4<f32>((-9.2609f + (sh_1 * (65.993f - (107.38f * sh_1)))), (72.357f + (sh_1 * (-624.68f + (1069.8f * sh_1)))), (-153.75f + (sh_1 * (1704.7f - (3127.5f * sh_1)))), (-67.745f + (sh_1 * (-1105.8f + (2706.6f * sh_1)))));
+    hair.trt4_ = (239.74f - (430.94f * sh_1));
+    let _e122 = hair;
+    return _e122;
+}
+
 fn hair_strand(frame: mat3x3<f32>, uv0_: vec2<f32>) -> vec3<f32> {
     var ts: vec2<f32>;
 
@@ -206,20 +298,20 @@ fn hair_strand(frame: mat3x3<f32>, uv0_: vec2<f32>) -> vec3<f32> {
     return _e25;
 }
 
-fn hair_hash(x: u32) -> f32 {
-    let state = ((x * 747796405u) + 2891336453u);
+fn hair_hash(x_2: u32) -> f32 {
+    let state = ((x_2 * 747796405u) + 2891336453u);
     let word = (((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u);
     return (f32(((word >> 22u) ^ word)) * 0.00000000023283064f);
 }
 
-fn hair_value_noise(x_1: f32, period: f32) -> f32 {
+fn hair_value_noise(x_3: f32, period: f32) -> f32 {
     let p = max(round(period), 1f);
-    let cell = floor(x_1);
-    let f = (x_1 - cell);
+    let cell = floor(x_3);
+    let f = (x_3 - cell);
     let c0_ = (cell - (p * floor((cell / p))));
-    let c1_ = select((c0_ + 1f), 0f, ((c0_ + 1f) >= p));
+    let c1_1 = select((c0_ + 1f), 0f, ((c0_ + 1f) >= p));
     let _e19 = hair_hash(u32(c0_));
-    let _e21 = hair_hash(u32(c1_));
+    let _e21 = hair_hash(u32(c1_1));
     return (mix(_e19, _e21, ((f * f) * (3f - (2f * f)))) - 0.5f);
 }
 
@@ -227,9 +319,9 @@ fn hair_jitter(uv0_1: vec2<f32>) -> f32 {
     let _e3 = textureSample(uv_rotate_mask, material_sampler, uv0_1);
     let mask = step(0.8f, _e3.x);
     let _e9 = material.anisotropic_direction;
-    let a_1 = radians(_e9);
-    let c = cos(a_1);
-    let s_2 = sin(a_1);
+    let a_2 = radians(_e9);
+    let c = cos(a_2);
+    let s_2 = sin(a_2);
     let rotated = vec2<f32>(((c * uv0_1.x) + (s_2 * uv0_1.y)), ((-(s_2) * uv0_1.x) + (c * uv0_1.y)));
     let _e30 = material.jitter_map_st;
     let _e31 = weft_transform_uv(select(uv0_1, rotated, (mask > 0.5f)), _e30);
@@ -245,21 +337,47 @@ fn hair_jitter(uv0_1: vec2<f32>) -> f32 {
     return ((_e46 * j) + (_e50 * _e58));
 }
 
-fn hair_kajiya_kay(t: vec3<f32>, h: vec3<f32>, exponent: f32) -> f32 {
-    let t_dot_h = clamp(dot(t, h), -1f, 1f);
+fn hair_kajiya_kay(t: vec3<f32>, h_1: vec3<f32>, exponent: f32) -> f32 {
+    let t_dot_h = clamp(dot(t, h_1), -1f, 1f);
     let sin_th = sqrt(max((1f - (t_dot_h * t_dot_h)), 0f));
     let dir_atten = smoothstep(-1f, 0f, t_dot_h);
     return (dir_atten * pow(sin_th, max(exponent, 1f)));
 }
 
 @vertex 
-fn vs_main(in: WeftVertexInput) -> WeftVaryings {
+fn vs_hair(in: WeftVertexInput) -> HairVaryings {
+    var h: WeftHair;
+    var scale: f32 = 0f;
+
     let _e1 = weft_forward_vertex(in);
-    return _e1;
+    let _e6 = material.ior;
+    let _e9 = material.roughness;
+    let _e12 = material.azimuthal_roughness;
+    let _e15 = material.scale_angle;
+    let _e16 = weft_hair_params(vec3(0f), _e6, _e9, _e12, _e15);
+    h = _e16;
+    {
+        h = WeftHair(vec3(0f), 0f, vec4(0f), 0f, vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec2(0f), 0f, vec4(0f), 0f);
+    }
+    let _e47 = h.eta;
+    let _e49 = h.s;
+    let _e52 = h.v.x;
+    let _e53 = scale;
+    let _e56 = h.sin2k;
+    let _e58 = h.r_floor;
+    let _e61 = h.cos2k;
+    let _e64 = h.blur.x;
+    let _e67 = h.mp_norm;
+    let _e70 = h.blur.y;
+    let _e73 = h.inv_v;
+    let _e76 = h.trt.x;
+    let _e79 = h.trt;
+    let _e82 = h.trt4_;
+    return HairVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, vec4<f32>(_e47, _e49, _e52, _e53), vec4<f32>(_e56, _e58), vec4<f32>(_e61, _e64), vec4<f32>(_e67, _e70), vec4<f32>(_e73, _e76), vec4<f32>(_e79.yzw, _e82));
 }
 
 @fragment 
-fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
+fn fs_main(in_1: HairVaryings) -> @location(0) vec4<f32> {
     var color: vec3<f32>;
     var lobes: WeftHairLobes;
 

@@ -78,10 +78,41 @@ struct WeftVaryings {
     metal::float2 uv0_;
     char _pad5[8];
 };
+struct WeftHair {
+    metal::packed_float3 sigma_a;
+    float eta;
+    metal::float4 v;
+    float s;
+    char _pad4[12];
+    metal::float3 sin2k;
+    metal::float3 cos2k;
+    metal::float3 inv_v;
+    metal::float3 mp_norm;
+    metal::float2 blur;
+    float r_floor;
+    char _pad10[4];
+    metal::float4 trt;
+    float trt4_;
+    char _pad12[12];
+};
 struct WeftHairLobes {
     metal::float3 s;
     metal::float3 albedo;
     metal::float3 back;
+};
+struct HairVaryings {
+    metal::float4 clip_position;
+    metal::float3 world_position;
+    metal::float3 world_normal;
+    metal::float4 world_tangent;
+    metal::float2 uv0_;
+    char _pad5[8];
+    metal::float4 fibre;
+    metal::float4 sin2k;
+    metal::float4 cos2k;
+    metal::float4 mp_norm;
+    metal::float4 inv_v;
+    metal::float4 trt;
 };
 constant float WEFT_PI = 3.1415927;
 constant float WEFT_INV_PI = 0.31830987;
@@ -223,6 +254,82 @@ metal::float2 weft_transform_uv(
     return (uv * st.xy) + st.zw;
 }
 
+float weft_hair_sqr(
+    float x
+) {
+    return x * x;
+}
+
+float weft_hair_safe_sqrt(
+    float x_1
+) {
+    return metal::sqrt(metal::max(x_1, 0.0));
+}
+
+float weft_hair_variance(
+    float beta_m
+) {
+    float b_2 = metal::clamp(beta_m, WEFT_HAIR_MIN_BETA_M, 1.0);
+    float b2_ = b_2 * b_2;
+    float b4_ = b2_ * b2_;
+    float b20_ = (((b4_ * b4_) * b4_) * b4_) * b4_;
+    float _e18 = weft_hair_sqr(((0.726 * b_2) + (0.812 * b2_)) + (3.7 * b20_));
+    return _e18;
+}
+
+float weft_hair_logistic_scale(
+    float beta_n
+) {
+    float b_3 = metal::clamp(beta_n, WEFT_HAIR_MIN_BETA_N, 1.0);
+    float b2_1 = b_3 * b_3;
+    float b4_1 = b2_1 * b2_1;
+    float b22_ = ((((b4_1 * b4_1) * b4_1) * b4_1) * b4_1) * b2_1;
+    return 0.62665707 * (((0.265 * b_3) + (1.194 * b2_1)) + (5.372 * b22_));
+}
+
+WeftHair weft_hair_params(
+    metal::float3 sigma_a,
+    float eta,
+    float beta_m_1,
+    float beta_n_1,
+    float alpha_deg
+) {
+    WeftHair hair = {};
+    hair.sigma_a = metal::max(sigma_a, metal::float3(0.0));
+    hair.eta = metal::max(eta, 1.0001);
+    float _e13 = weft_hair_variance(beta_m_1);
+    hair.v = metal::float4(_e13, 0.25 * _e13, 4.0 * _e13, 4.0 * _e13);
+    float _e23 = weft_hair_logistic_scale(beta_n_1);
+    hair.s = _e23;
+    float a_1 = ((alpha_deg) * 0.017453292519943295474);
+    float s0_ = metal::sin(a_1);
+    float _e29 = weft_hair_safe_sqrt(1.0 - (s0_ * s0_));
+    float s1_ = (2.0 * _e29) * s0_;
+    float c1_ = (_e29 * _e29) - (s0_ * s0_);
+    float s2_ = (2.0 * c1_) * s1_;
+    float c2_ = (c1_ * c1_) - (s1_ * s1_);
+    hair.sin2k = metal::float3(s0_, s1_, s2_);
+    hair.cos2k = metal::float3(_e29, c1_, c2_);
+    hair.inv_v = metal::float3(1.0, 4.0, 0.25) / metal::float3(_e13);
+    float _e55 = hair.inv_v.x;
+    float e_trt = metal::exp(-0.5 * _e55);
+    float _e60 = weft_hair_sqr(e_trt * e_trt);
+    metal::float3 _e63 = hair.inv_v;
+    float _e67 = weft_hair_sqr(_e60 * _e60);
+    hair.mp_norm = _e63 / (metal::float3(1.0) - metal::float3(_e60, _e67, e_trt));
+    float _e73 = hair.s;
+    float d = 0.8162094 * _e73;
+    hair.blur = metal::float2(metal::sin(d), metal::cos(d));
+    float _e81 = hair.s;
+    float _e84 = weft_hair_sqr(0.4534 * _e81);
+    hair.r_floor = _e84;
+    float sh_1 = hair.s;
+    hair.trt = metal::float4(-9.2609 + (sh_1 * (65.993 - (107.38 * sh_1))), 72.357 + (sh_1 * (-624.68 + (1069.8 * sh_1))), -153.75 + (sh_1 * (1704.7 - (3127.5 * sh_1))), -67.745 + (sh_1 * (-1105.8 + (2706.6 * sh_1))));
+    hair.trt4_ = 239.74 - (430.94 * sh_1);
+    WeftHair _e122 = hair;
+    return _e122;
+}
+
 metal::float3 hair_strand(
     metal::float3x3 frame,
     metal::float2 uv0_,
@@ -238,9 +345,9 @@ metal::float3 hair_strand(
 }
 
 float hair_hash(
-    uint x
+    uint x_2
 ) {
-    uint state = (x * 747796405u) + 2891336453u;
+    uint state = (x_2 * 747796405u) + 2891336453u;
     uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
     return static_cast<float>((word >> 22u) ^ word) * 0.00000000023283064;
 }
@@ -250,16 +357,16 @@ uint naga_f2u32(float value) {
 }
 
 float hair_value_noise(
-    float x_1,
+    float x_3,
     float period
 ) {
     float p = metal::max(metal::rint(period), 1.0);
-    float cell = metal::floor(x_1);
-    float f = x_1 - cell;
+    float cell = metal::floor(x_3);
+    float f = x_3 - cell;
     float c0_ = cell - (p * metal::floor(cell / p));
-    float c1_ = ((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0);
+    float c1_1 = ((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0);
     float _e19 = hair_hash(naga_f2u32(c0_));
-    float _e21 = hair_hash(naga_f2u32(c1_));
+    float _e21 = hair_hash(naga_f2u32(c1_1));
     return metal::mix(_e19, _e21, (f * f) * (3.0 - (2.0 * f))) - 0.5;
 }
 
@@ -273,9 +380,9 @@ float hair_jitter(
     metal::float4 _e3 = uv_rotate_mask.sample(material_sampler, uv0_1);
     float mask = metal::step(0.8, _e3.x);
     float _e9 = material.anisotropic_direction;
-    float a_1 = ((_e9) * 0.017453292519943295474);
-    float c = metal::cos(a_1);
-    float s_2 = metal::sin(a_1);
+    float a_2 = ((_e9) * 0.017453292519943295474);
+    float c = metal::cos(a_2);
+    float s_2 = metal::sin(a_2);
     metal::float2 rotated = metal::float2((c * uv0_1.x) + (s_2 * uv0_1.y), (-(s_2) * uv0_1.x) + (c * uv0_1.y));
     metal::float4 _e30 = material.jitter_map_st;
     metal::float2 _e31 = weft_transform_uv((mask > 0.5) ? rotated : uv0_1, _e30);
@@ -293,10 +400,10 @@ float hair_jitter(
 
 float hair_kajiya_kay(
     metal::float3 t,
-    metal::float3 h,
+    metal::float3 h_1,
     float exponent
 ) {
-    float t_dot_h = metal::clamp(metal::dot(t, h), -1.0, 1.0);
+    float t_dot_h = metal::clamp(metal::dot(t, h_1), -1.0, 1.0);
     float sin_th = metal::sqrt(metal::max(1.0 - (t_dot_h * t_dot_h), 0.0));
     float dir_atten = metal::smoothstep(-1.0, 0.0, t_dot_h);
     return dir_atten * metal::pow(sin_th, metal::max(exponent, 1.0));
@@ -354,28 +461,60 @@ fragment fs_fringe_shadowOutput fs_fringe_shadow(
 }
 
 
-struct vs_mainInput {
+struct vs_hairInput {
     metal::float3 position [[attribute(0)]];
     metal::float3 normal [[attribute(1)]];
     metal::float4 tangent_1 [[attribute(2)]];
     metal::float2 uv0_2 [[attribute(3)]];
 };
-struct vs_mainOutput {
+struct vs_hairOutput {
     metal::float4 clip_position [[position]];
     metal::float3 world_position [[user(loc0), center_perspective]];
     metal::float3 world_normal [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
+    metal::float4 fibre [[user(loc4), flat]];
+    metal::float4 sin2k [[user(loc5), flat]];
+    metal::float4 cos2k [[user(loc6), flat]];
+    metal::float4 mp_norm [[user(loc7), flat]];
+    metal::float4 inv_v [[user(loc8), flat]];
+    metal::float4 trt [[user(loc9), flat]];
 };
-vertex vs_mainOutput vs_main(
-  vs_mainInput varyings_2 [[stage_in]]
+vertex vs_hairOutput vs_hair(
+  vs_hairInput varyings_2 [[stage_in]]
 , constant WeftFrame& weft_frame [[buffer(0)]]
 , constant WeftObject& weft_object [[buffer(2)]]
+, constant WeftMaterial& material [[buffer(1)]]
 ) {
     const WeftVertexInput in_1 = { varyings_2.position, varyings_2.normal, varyings_2.tangent_1, varyings_2.uv0_2 };
+    WeftHair h = {};
+    float scale = 0.0;
     WeftVaryings _e1 = weft_forward_vertex(in_1, weft_frame, weft_object);
-    const auto _tmp_1 = _e1;
-    return vs_mainOutput { _tmp_1.clip_position, _tmp_1.world_position, _tmp_1.world_normal, _tmp_1.world_tangent, _tmp_1.uv0_ };
+    float _e6 = material.ior;
+    float _e9 = material.roughness;
+    float _e12 = material.azimuthal_roughness;
+    float _e15 = material.scale_angle;
+    WeftHair _e16 = weft_hair_params(metal::float3(0.0), _e6, _e9, _e12, _e15);
+    h = _e16;
+    {
+        h = WeftHair {metal::float3(0.0), 0.0, metal::float4(0.0), 0.0, {}, metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float2(0.0), 0.0, {}, metal::float4(0.0), 0.0};
+    }
+    float _e47 = h.eta;
+    float _e49 = h.s;
+    float _e52 = h.v.x;
+    float _e53 = scale;
+    metal::float3 _e56 = h.sin2k;
+    float _e58 = h.r_floor;
+    metal::float3 _e61 = h.cos2k;
+    float _e64 = h.blur.x;
+    metal::float3 _e67 = h.mp_norm;
+    float _e70 = h.blur.y;
+    metal::float3 _e73 = h.inv_v;
+    float _e76 = h.trt.x;
+    metal::float4 _e79 = h.trt;
+    float _e82 = h.trt4_;
+    const auto _tmp_1 = HairVaryings {_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, {}, metal::float4(_e47, _e49, _e52, _e53), metal::float4(_e56, _e58), metal::float4(_e61, _e64), metal::float4(_e67, _e70), metal::float4(_e73, _e76), metal::float4(_e79.yzw, _e82)};
+    return vs_hairOutput { _tmp_1.clip_position, _tmp_1.world_position, _tmp_1.world_normal, _tmp_1.world_tangent, _tmp_1.uv0_, _tmp_1.fibre, _tmp_1.sin2k, _tmp_1.cos2k, _tmp_1.mp_norm, _tmp_1.inv_v, _tmp_1.trt };
 }
 
 
@@ -384,6 +523,12 @@ struct fs_mainInput {
     metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_2 [[user(loc3), center_perspective]];
+    metal::float4 fibre [[user(loc4), flat]];
+    metal::float4 sin2k [[user(loc5), flat]];
+    metal::float4 cos2k [[user(loc6), flat]];
+    metal::float4 mp_norm [[user(loc7), flat]];
+    metal::float4 inv_v [[user(loc8), flat]];
+    metal::float4 trt [[user(loc9), flat]];
 };
 struct fs_mainOutput {
     metal::float4 member_3 [[color(0)]];
@@ -398,7 +543,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> jitter_map [[texture(1)]]
 , metal::texture2d<float, metal::access::sample> uv_rotate_mask [[texture(2)]]
 ) {
-    const WeftVaryings in_2 = { clip_position, varyings_3.world_position_2, varyings_3.world_normal_1, varyings_3.world_tangent, varyings_3.uv0_2 };
+    const HairVaryings in_2 = { clip_position, varyings_3.world_position_2, varyings_3.world_normal_1, varyings_3.world_tangent, varyings_3.uv0_2, {}, varyings_3.fibre, varyings_3.sin2k, varyings_3.cos2k, varyings_3.mp_norm, varyings_3.inv_v, varyings_3.trt };
     metal::float3 color = {};
     WeftHairLobes lobes = {};
     metal::float4 _e4 = material.base_map_st;

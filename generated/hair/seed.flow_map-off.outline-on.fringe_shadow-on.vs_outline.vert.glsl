@@ -70,10 +70,37 @@ struct WeftVaryings {
     vec4 world_tangent;
     vec2 uv0_;
 };
+struct WeftHair {
+    vec3 sigma_a;
+    float eta;
+    vec4 v;
+    float s;
+    vec3 sin2k;
+    vec3 cos2k;
+    vec3 inv_v;
+    vec3 mp_norm;
+    vec2 blur;
+    float r_floor;
+    vec4 trt;
+    float trt4_;
+};
 struct WeftHairLobes {
     vec3 s;
     vec3 albedo;
     vec3 back;
+};
+struct HairVaryings {
+    vec4 clip_position;
+    vec3 world_position;
+    vec3 world_normal;
+    vec4 world_tangent;
+    vec2 uv0_;
+    vec4 fibre;
+    vec4 sin2k;
+    vec4 cos2k;
+    vec4 mp_norm;
+    vec4 inv_v;
+    vec4 trt;
 };
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
@@ -194,6 +221,68 @@ vec2 weft_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
 
+float weft_hair_sqr(float x) {
+    return (x * x);
+}
+
+float weft_hair_safe_sqrt(float x_1) {
+    return sqrt(max(x_1, 0.0));
+}
+
+float weft_hair_variance(float beta_m) {
+    float b_2 = clamp(beta_m, WEFT_HAIR_MIN_BETA_M, 1.0);
+    float b2_ = (b_2 * b_2);
+    float b4_ = (b2_ * b2_);
+    float b20_ = ((((b4_ * b4_) * b4_) * b4_) * b4_);
+    float _e18 = weft_hair_sqr((((0.726 * b_2) + (0.812 * b2_)) + (3.7 * b20_)));
+    return _e18;
+}
+
+float weft_hair_logistic_scale(float beta_n) {
+    float b_3 = clamp(beta_n, WEFT_HAIR_MIN_BETA_N, 1.0);
+    float b2_1 = (b_3 * b_3);
+    float b4_1 = (b2_1 * b2_1);
+    float b22_ = (((((b4_1 * b4_1) * b4_1) * b4_1) * b4_1) * b2_1);
+    return (0.62665707 * (((0.265 * b_3) + (1.194 * b2_1)) + (5.372 * b22_)));
+}
+
+WeftHair weft_hair_params(vec3 sigma_a, float eta, float beta_m_1, float beta_n_1, float alpha_deg) {
+    WeftHair hair = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0, vec4(0.0), 0.0);
+    hair.sigma_a = max(sigma_a, vec3(0.0));
+    hair.eta = max(eta, 1.0001);
+    float _e13 = weft_hair_variance(beta_m_1);
+    hair.v = vec4(_e13, (0.25 * _e13), (4.0 * _e13), (4.0 * _e13));
+    float _e23 = weft_hair_logistic_scale(beta_n_1);
+    hair.s = _e23;
+    float a_1 = radians(alpha_deg);
+    float s0_ = sin(a_1);
+    float _e29 = weft_hair_safe_sqrt((1.0 - (s0_ * s0_)));
+    float s1_ = ((2.0 * _e29) * s0_);
+    float c1_ = ((_e29 * _e29) - (s0_ * s0_));
+    float s2_ = ((2.0 * c1_) * s1_);
+    float c2_ = ((c1_ * c1_) - (s1_ * s1_));
+    hair.sin2k = vec3(s0_, s1_, s2_);
+    hair.cos2k = vec3(_e29, c1_, c2_);
+    hair.inv_v = (vec3(1.0, 4.0, 0.25) / vec3(_e13));
+    float _e55 = hair.inv_v.x;
+    float e_trt = exp((-0.5 * _e55));
+    float _e60 = weft_hair_sqr((e_trt * e_trt));
+    vec3 _e63 = hair.inv_v;
+    float _e67 = weft_hair_sqr((_e60 * _e60));
+    hair.mp_norm = (_e63 / (vec3(1.0) - vec3(_e60, _e67, e_trt)));
+    float _e73 = hair.s;
+    float d = (0.8162094 * _e73);
+    hair.blur = vec2(sin(d), cos(d));
+    float _e81 = hair.s;
+    float _e84 = weft_hair_sqr((0.4534 * _e81));
+    hair.r_floor = _e84;
+    float sh_1 = hair.s;
+    hair.trt = vec4((-9.2609 + (sh_1 * (65.993 - (107.38 * sh_1)))), (72.357 + (sh_1 * (-624.68 + (1069.8 * sh_1)))), (-153.75 + (sh_1 * (1704.7 - (3127.5 * sh_1)))), (-67.745 + (sh_1 * (-1105.8 + (2706.6 * sh_1)))));
+    hair.trt4_ = (239.74 - (430.94 * sh_1));
+    WeftHair _e122 = hair;
+    return _e122;
+}
+
 vec3 hair_strand(mat3x3 frame, vec2 uv0_) {
     vec2 ts = vec2(0.0);
     uint _e10 = _group_1_binding_0_vs.strand_along_tangent;
@@ -204,25 +293,25 @@ vec3 hair_strand(mat3x3 frame, vec2 uv0_) {
     return _e25;
 }
 
-float hair_hash(uint x) {
-    uint state = ((x * 747796405u) + 2891336453u);
+float hair_hash(uint x_2) {
+    uint state = ((x_2 * 747796405u) + 2891336453u);
     uint word = (((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u);
     return (float(((word >> 22u) ^ word)) * 2.3283064e-10);
 }
 
-float hair_value_noise(float x_1, float period) {
+float hair_value_noise(float x_3, float period) {
     float p = max(roundEven(period), 1.0);
-    float cell = floor(x_1);
-    float f = (x_1 - cell);
+    float cell = floor(x_3);
+    float f = (x_3 - cell);
     float c0_ = (cell - (p * floor((cell / p))));
-    float c1_ = (((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0));
+    float c1_1 = (((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0));
     float _e19 = hair_hash(uint(c0_));
-    float _e21 = hair_hash(uint(c1_));
+    float _e21 = hair_hash(uint(c1_1));
     return (mix(_e19, _e21, ((f * f) * (3.0 - (2.0 * f)))) - 0.5);
 }
 
-float hair_kajiya_kay(vec3 t, vec3 h, float exponent) {
-    float t_dot_h = clamp(dot(t, h), -1.0, 1.0);
+float hair_kajiya_kay(vec3 t, vec3 h_1, float exponent) {
+    float t_dot_h = clamp(dot(t, h_1), -1.0, 1.0);
     float sin_th = sqrt(max((1.0 - (t_dot_h * t_dot_h)), 0.0));
     float dir_atten = smoothstep(-1.0, 0.0, t_dot_h);
     return (dir_atten * pow(sin_th, max(exponent, 1.0)));

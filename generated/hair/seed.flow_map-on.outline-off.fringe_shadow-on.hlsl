@@ -82,6 +82,32 @@ struct WeftVaryings {
     float2 uv0_ : LOC3;
 };
 
+struct WeftHair {
+    float3 sigma_a;
+    float eta;
+    float4 v;
+    float s;
+    int _pad4_0;
+    int _pad4_1;
+    int _pad4_2;
+    float3 sin2k;
+    int _pad5_0;
+    float3 cos2k;
+    int _pad6_0;
+    float3 inv_v;
+    int _pad7_0;
+    float3 mp_norm;
+    int _pad8_0;
+    float2 blur;
+    float r_floor;
+    int _pad10_0;
+    float4 trt;
+    float trt4_;
+    int _end_pad_0;
+    int _end_pad_1;
+    int _end_pad_2;
+};
+
 struct WeftHairLobes {
     float3 s;
     int _pad1_0;
@@ -89,6 +115,20 @@ struct WeftHairLobes {
     int _pad2_0;
     float3 back;
     int _end_pad_0;
+};
+
+struct HairVaryings {
+    float4 clip_position : SV_Position;
+    float3 world_position : LOC0;
+    float3 world_normal : LOC1;
+    float4 world_tangent : LOC2;
+    float2 uv0_ : LOC3;
+    nointerpolation float4 fibre : LOC4;
+    nointerpolation float4 sin2k : LOC5;
+    nointerpolation float4 cos2k : LOC6;
+    nointerpolation float4 mp_norm : LOC7;
+    nointerpolation float4 inv_v : LOC8;
+    nointerpolation float4 trt : LOC9;
 };
 
 static const float WEFT_PI = 3.1415927;
@@ -121,11 +161,17 @@ struct VertexOutput_vs_fringe_shadow {
     float4 clip_position : SV_Position;
 };
 
-struct VertexOutput_vs_main {
+struct VertexOutput_vs_hair {
     float3 world_position_2 : LOC0;
     float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_2 : LOC3;
+    nointerpolation float4 fibre : LOC4;
+    nointerpolation float4 sin2k : LOC5;
+    nointerpolation float4 cos2k : LOC6;
+    nointerpolation float4 mp_norm : LOC7;
+    nointerpolation float4 inv_v : LOC8;
+    nointerpolation float4 trt : LOC9;
     float4 clip_position_1 : SV_Position;
 };
 
@@ -134,6 +180,12 @@ struct FragmentInput_fs_main {
     float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_3 : LOC3;
+    nointerpolation float4 fibre_1 : LOC4;
+    nointerpolation float4 sin2k_1 : LOC5;
+    nointerpolation float4 cos2k_1 : LOC6;
+    nointerpolation float4 mp_norm_1 : LOC7;
+    nointerpolation float4 inv_v_1 : LOC8;
+    nointerpolation float4 trt_1 : LOC9;
     float4 clip_position_2 : SV_Position;
 };
 
@@ -254,6 +306,75 @@ float2 weft_transform_uv(float2 uv, float4 st)
     return ((uv * st.xy) + st.zw);
 }
 
+float weft_hair_sqr(float x)
+{
+    return (x * x);
+}
+
+float weft_hair_safe_sqrt(float x_1)
+{
+    return sqrt(max(x_1, 0.0));
+}
+
+float weft_hair_variance(float beta_m)
+{
+    float b_2 = clamp(beta_m, WEFT_HAIR_MIN_BETA_M, 1.0);
+    float b2_ = (b_2 * b_2);
+    float b4_ = (b2_ * b2_);
+    float b20_ = ((((b4_ * b4_) * b4_) * b4_) * b4_);
+    const float _e18 = weft_hair_sqr((((0.726 * b_2) + (0.812 * b2_)) + (3.7 * b20_)));
+    return _e18;
+}
+
+float weft_hair_logistic_scale(float beta_n)
+{
+    float b_3 = clamp(beta_n, WEFT_HAIR_MIN_BETA_N, 1.0);
+    float b2_1 = (b_3 * b_3);
+    float b4_1 = (b2_1 * b2_1);
+    float b22_ = (((((b4_1 * b4_1) * b4_1) * b4_1) * b4_1) * b2_1);
+    return (0.62665707 * (((0.265 * b_3) + (1.194 * b2_1)) + (5.372 * b22_)));
+}
+
+WeftHair weft_hair_params(float3 sigma_a, float eta, float beta_m_1, float beta_n_1, float alpha_deg)
+{
+    WeftHair hair = (WeftHair)0;
+
+    hair.sigma_a = max(sigma_a, (0.0).xxx);
+    hair.eta = max(eta, 1.0001);
+    const float _e13 = weft_hair_variance(beta_m_1);
+    hair.v = float4(_e13, (0.25 * _e13), (4.0 * _e13), (4.0 * _e13));
+    const float _e23 = weft_hair_logistic_scale(beta_n_1);
+    hair.s = _e23;
+    float a_1 = radians(alpha_deg);
+    float s0_ = sin(a_1);
+    const float _e29 = weft_hair_safe_sqrt((1.0 - (s0_ * s0_)));
+    float s1_ = ((2.0 * _e29) * s0_);
+    float c1_ = ((_e29 * _e29) - (s0_ * s0_));
+    float s2_ = ((2.0 * c1_) * s1_);
+    float c2_ = ((c1_ * c1_) - (s1_ * s1_));
+    hair.sin2k = float3(s0_, s1_, s2_);
+    hair.cos2k = float3(_e29, c1_, c2_);
+    hair.inv_v = (float3(1.0, 4.0, 0.25) / (_e13).xxx);
+    float _e55 = hair.inv_v.x;
+    float e_trt = exp((-0.5 * _e55));
+    const float _e60 = weft_hair_sqr((e_trt * e_trt));
+    float3 _e63 = hair.inv_v;
+    const float _e67 = weft_hair_sqr((_e60 * _e60));
+    hair.mp_norm = (_e63 / ((1.0).xxx - float3(_e60, _e67, e_trt)));
+    float _e73 = hair.s;
+    float d = (0.8162094 * _e73);
+    hair.blur = float2(sin(d), cos(d));
+    float _e81 = hair.s;
+    const float _e84 = weft_hair_sqr((0.4534 * _e81));
+    hair.r_floor = _e84;
+    float sh_1 = hair.s;
+    hair.trt = float4((-9.2609 + (sh_1 * (65.993 - (107.38 * sh_1)))), (72.357 + (sh_1 * (-624.68 + (1069.8 * sh_1)))), (-153.75 + (sh_1 * (1704.7 - (3127.5 * sh_1)))), (-67.745 + (sh_1 * (-1105.8 + (2706.6 * sh_1)))));
+    hair.trt4_ = (239.74 - (430.94 * sh_1));
+    WeftHair _e122 = hair;
+    const WeftHair wefthair = _e122;
+    return wefthair;
+}
+
 float3 hair_strand(float3x3 frame, float2 uv0_)
 {
     float2 ts = (float2)0;
@@ -273,9 +394,9 @@ float3 hair_strand(float3x3 frame, float2 uv0_)
     return _e43;
 }
 
-float hair_hash(uint x)
+float hair_hash(uint x_2)
 {
-    uint state = ((x * 747796405u) + 2891336453u);
+    uint state = ((x_2 * 747796405u) + 2891336453u);
     uint word = (((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u);
     return (float(((word >> 22u) ^ word)) * 2.3283064e-10);
 }
@@ -284,15 +405,15 @@ uint naga_f2u32(float value) {
     return uint(clamp(value, 0.0, 4294967000.0));
 }
 
-float hair_value_noise(float x_1, float period)
+float hair_value_noise(float x_3, float period)
 {
     float p = max(round(period), 1.0);
-    float cell = floor(x_1);
-    float f_1 = (x_1 - cell);
+    float cell = floor(x_3);
+    float f_1 = (x_3 - cell);
     float c0_ = (cell - (p * floor((cell / p))));
-    float c1_ = (((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0));
+    float c1_1 = (((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0));
     const float _e19 = hair_hash(naga_f2u32(c0_));
-    const float _e21 = hair_hash(naga_f2u32(c1_));
+    const float _e21 = hair_hash(naga_f2u32(c1_1));
     return (lerp(_e19, _e21, ((f_1 * f_1) * (3.0 - (2.0 * f_1)))) - 0.5);
 }
 
@@ -301,9 +422,9 @@ float hair_jitter(float2 uv0_1)
     float4 _e3 = uv_rotate_mask.Sample(material_sampler, uv0_1);
     float mask = step(0.8, _e3.x);
     float _e9 = material.anisotropic_direction;
-    float a_1 = radians(_e9);
-    float c = cos(a_1);
-    float s_2 = sin(a_1);
+    float a_2 = radians(_e9);
+    float c = cos(a_2);
+    float s_2 = sin(a_2);
     float2 rotated = float2(((c * uv0_1.x) + (s_2 * uv0_1.y)), ((-(s_2) * uv0_1.x) + (c * uv0_1.y)));
     float4 _e30 = material.jitter_map_st;
     const float2 _e31 = weft_transform_uv(((mask > 0.5) ? rotated : uv0_1), _e30);
@@ -319,9 +440,9 @@ float hair_jitter(float2 uv0_1)
     return ((_e46 * j) + (_e50 * _e58));
 }
 
-float hair_kajiya_kay(float3 t, float3 h, float exponent)
+float hair_kajiya_kay(float3 t, float3 h_1, float exponent)
 {
-    float t_dot_h = clamp(dot(t, h), -1.0, 1.0);
+    float t_dot_h = clamp(dot(t, h_1), -1.0, 1.0);
     float sin_th = sqrt(max((1.0 - (t_dot_h * t_dot_h)), 0.0));
     float dir_atten = smoothstep(-1.0, 0.0, t_dot_h);
     return (dir_atten * pow(sin_th, max(exponent, 1.0)));
@@ -364,17 +485,76 @@ float4 fs_fringe_shadow() : SV_Target0
     return float4(max(_e2.xyz, (0.0).xxx), 1.0);
 }
 
-VertexOutput_vs_main vs_main(WeftVertexInput in_1)
+WeftHair ConstructWeftHair(float3 arg0, float arg1, float4 arg2, float arg3, float3 arg4, float3 arg5, float3 arg6, float3 arg7, float2 arg8, float arg9, float4 arg10, float arg11) {
+    WeftHair ret = (WeftHair)0;
+    ret.sigma_a = arg0;
+    ret.eta = arg1;
+    ret.v = arg2;
+    ret.s = arg3;
+    ret.sin2k = arg4;
+    ret.cos2k = arg5;
+    ret.inv_v = arg6;
+    ret.mp_norm = arg7;
+    ret.blur = arg8;
+    ret.r_floor = arg9;
+    ret.trt = arg10;
+    ret.trt4_ = arg11;
+    return ret;
+}
+
+HairVaryings ConstructHairVaryings(float4 arg0, float3 arg1, float3 arg2, float4 arg3, float2 arg4, float4 arg5, float4 arg6, float4 arg7, float4 arg8, float4 arg9, float4 arg10) {
+    HairVaryings ret = (HairVaryings)0;
+    ret.clip_position = arg0;
+    ret.world_position = arg1;
+    ret.world_normal = arg2;
+    ret.world_tangent = arg3;
+    ret.uv0_ = arg4;
+    ret.fibre = arg5;
+    ret.sin2k = arg6;
+    ret.cos2k = arg7;
+    ret.mp_norm = arg8;
+    ret.inv_v = arg9;
+    ret.trt = arg10;
+    return ret;
+}
+
+VertexOutput_vs_hair vs_hair(WeftVertexInput in_1)
 {
+    WeftHair h = (WeftHair)0;
+    float scale = 0.0;
+
     const WeftVaryings _e1 = weft_forward_vertex(in_1);
-    const WeftVaryings weftvaryings_1 = _e1;
-    const VertexOutput_vs_main weftvaryings_1_ = { weftvaryings_1.world_position, weftvaryings_1.world_normal, weftvaryings_1.world_tangent, weftvaryings_1.uv0_, weftvaryings_1.clip_position };
-    return weftvaryings_1_;
+    float _e6 = material.ior;
+    float _e9 = material.roughness;
+    float _e12 = material.azimuthal_roughness;
+    float _e15 = material.scale_angle;
+    const WeftHair _e16 = weft_hair_params((0.0).xxx, _e6, _e9, _e12, _e15);
+    h = _e16;
+    {
+        h = ConstructWeftHair((0.0).xxx, 0.0, (0.0).xxxx, 0.0, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xx, 0.0, (0.0).xxxx, 0.0);
+    }
+    float _e47 = h.eta;
+    float _e49 = h.s;
+    float _e52 = h.v.x;
+    float _e53 = scale;
+    float3 _e56 = h.sin2k;
+    float _e58 = h.r_floor;
+    float3 _e61 = h.cos2k;
+    float _e64 = h.blur.x;
+    float3 _e67 = h.mp_norm;
+    float _e70 = h.blur.y;
+    float3 _e73 = h.inv_v;
+    float _e76 = h.trt.x;
+    float4 _e79 = h.trt;
+    float _e82 = h.trt4_;
+    const HairVaryings hairvaryings = ConstructHairVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, float4(_e47, _e49, _e52, _e53), float4(_e56, _e58), float4(_e61, _e64), float4(_e67, _e70), float4(_e73, _e76), float4(_e79.yzw, _e82));
+    const VertexOutput_vs_hair hairvaryings_1 = { hairvaryings.world_position, hairvaryings.world_normal, hairvaryings.world_tangent, hairvaryings.uv0_, hairvaryings.fibre, hairvaryings.sin2k, hairvaryings.cos2k, hairvaryings.mp_norm, hairvaryings.inv_v, hairvaryings.trt, hairvaryings.clip_position };
+    return hairvaryings_1;
 }
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_2 = { fragmentinput_fs_main.clip_position_2, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_3 };
+    HairVaryings in_2 = { fragmentinput_fs_main.clip_position_2, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_3, fragmentinput_fs_main.fibre_1, fragmentinput_fs_main.sin2k_1, fragmentinput_fs_main.cos2k_1, fragmentinput_fs_main.mp_norm_1, fragmentinput_fs_main.inv_v_1, fragmentinput_fs_main.trt_1 };
     float3 color = (float3)0;
     WeftHairLobes lobes = (WeftHairLobes)0;
 

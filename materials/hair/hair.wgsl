@@ -37,8 +37,58 @@ const HAIR_REFERENCE_CELLS: u32 = 64u;
 // layer at the terminator where light still passes (README).
 const HAIR_TERMINATOR: f32 = 0.25;
 
+// lib/forward.wgsl's varyings (locations 0-3) and, flat, what the physical
+// tiers' fibre model takes from the uniforms alone (weft_hair_params but σ_a;
+// the same value at every vertex): RDNA has no scalar float ALU, so computed
+// in the fragment stage it is per-pixel work (README, "Per-vertex constants").
+struct HairVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+    @location(0) world_position: vec3<f32>,
+    @location(1) world_normal: vec3<f32>,
+    @location(2) world_tangent: vec4<f32>,
+    @location(3) uv0: vec2<f32>,
+    // η, s, v (R), 1 / σ_a's polynomial in β_n (weft_hair_sigma_a_scale).
+    @location(4) @interpolate(flat) fibre: vec4<f32>,
+    // sin 2^k α, then R's floor; cos 2^k α, then sin(δ/2).
+    @location(5) @interpolate(flat) sin2k: vec4<f32>,
+    @location(6) @interpolate(flat) cos2k: vec4<f32>,
+    // M_p's normalisation per lobe, then cos(δ/2); 1/v_p, then log s_TRT²'s
+    // constant term; its a, a², a³, a⁴ coefficients.
+    @location(7) @interpolate(flat) mp_norm: vec4<f32>,
+    @location(8) @interpolate(flat) inv_v: vec4<f32>,
+    @location(9) @interpolate(flat) trt: vec4<f32>,
+}
+
+@vertex
+fn vs_hair(in: WeftVertexInput) -> HairVaryings {
+    let base = weft_forward_vertex(in);
+    var h = weft_hair_params(vec3<f32>(0.0), material.ior, material.roughness, material.azimuthal_roughness, material.scale_angle);
+    var scale = 0.0;
+    if WEFT_TIER == TIER_SEED {
+        h = WeftHair(vec3<f32>(0.0), 0.0, vec4<f32>(0.0), 0.0, vec3<f32>(0.0), vec3<f32>(0.0),
+                     vec3<f32>(0.0), vec3<f32>(0.0), vec2<f32>(0.0), 0.0, vec4<f32>(0.0), 0.0);
+    } else {
+        scale = weft_hair_sigma_a_scale(material.azimuthal_roughness);
+    }
+    return HairVaryings(
+        base.clip_position, base.world_position, base.world_normal, base.world_tangent, base.uv0,
+        vec4<f32>(h.eta, h.s, h.v.x, scale),
+        vec4<f32>(h.sin2k, h.r_floor), vec4<f32>(h.cos2k, h.blur.x),
+        vec4<f32>(h.mp_norm, h.blur.y), vec4<f32>(h.inv_v, h.trt.x), vec4<f32>(h.trt.yzw, h.trt4),
+    );
+}
+
+// WeftHair from the flat varyings and the pixel's σ_a (v_TT, v_TRT and the
+// residual's as weft_hair_params forms them).
+fn hair_from_varyings(in: HairVaryings, sigma_a: vec3<f32>) -> WeftHair {
+    let v = in.fibre.z;
+    return WeftHair(max(sigma_a, vec3<f32>(0.0)), in.fibre.x, vec4<f32>(v, 0.25 * v, 4.0 * v, 4.0 * v), in.fibre.y,
+                    in.sin2k.xyz, in.cos2k.xyz, in.inv_v.xyz, in.mp_norm.xyz, vec2<f32>(in.cos2k.w, in.mp_norm.w),
+                    in.sin2k.w, vec4<f32>(in.inv_v.w, in.trt.xyz), in.trt.w);
+}
+
 @fragment
-fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
+fn fs_main(in: HairVaryings) -> @location(0) vec4<f32> {
     // ------------------------------------------------------------ surface
     let uv = weft_transform_uv(in.uv0, material.base_map_st);
     let base_rgba = material.base_color * textureSample(base_map, material_sampler, uv);
@@ -71,8 +121,7 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
         color = direct + ambient * base;
     } else {
         let t = weft_safe_normalize(strand + shift * n, strand);
-        let sigma_a = weft_hair_sigma_a_from_color(base, material.azimuthal_roughness);
-        let hair = weft_hair_params(sigma_a, material.ior, material.roughness, material.azimuthal_roughness, material.scale_angle);
+        let hair = hair_from_varyings(in, weft_hair_sigma_a_scaled(base, in.fibre.w));
         let angles = weft_hair_angles(t, v, l);
         var lobes: WeftHairLobes;
         if WEFT_TIER == TIER_REFERENCE {

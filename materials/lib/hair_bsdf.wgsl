@@ -16,7 +16,8 @@
 
 // Longitudinal variances and azimuthal scale from the user's roughnesses,
 // the scale tilts (sin, cos of 2^k α), the IOR and the absorption: what a
-// pixel evaluates once and every lobe reads.
+// pixel evaluates once and every lobe reads. All but σ_a depend on the
+// material's uniforms alone (hair.wgsl computes them per vertex).
 struct WeftHair {
     sigma_a: vec3<f32>,
     eta: f32,
@@ -27,6 +28,16 @@ struct WeftHair {
     // sin / cos of α, 2α, 4α.
     sin2k: vec3<f32>,
     cos2k: vec3<f32>,
+    // The fast tier's (weft_hair_fast): 1/v_p and M_p's normalisation
+    // 1/(v_p (1 - e^(-2/v_p))) of R, TT, TRT; sin, cos of the TT blur's
+    // half-step δ/2; R's floor (σ/4)²; log s_TRT²'s coefficients in a
+    // (powers 0-3, then 4 in trt4).
+    inv_v: vec3<f32>,
+    mp_norm: vec3<f32>,
+    blur: vec2<f32>,
+    r_floor: f32,
+    trt: vec4<f32>,
+    trt4: f32,
 }
 
 // Smallest longitudinal roughness: v_TT = v / 4 stays above 2e-4, where the
@@ -71,9 +82,19 @@ fn weft_hair_logistic_scale(beta_n: f32) -> f32 {
 // multiply-scattered hair of colour c (linear, each channel in (0, 1]) at
 // azimuthal roughness β_n. c is floored at 1e-4 (log 0).
 fn weft_hair_sigma_a_from_color(c: vec3<f32>, beta_n: f32) -> vec3<f32> {
+    return weft_hair_sigma_a_scaled(c, weft_hair_sigma_a_scale(beta_n));
+}
+
+// The part of eq. 9 that depends on β_n alone: 1 / its polynomial.
+fn weft_hair_sigma_a_scale(beta_n: f32) -> f32 {
     let b = clamp(beta_n, WEFT_HAIR_MIN_BETA_N, 1.0);
     let d = 5.969 - 0.215 * b + 2.532 * b * b - 10.73 * pow(b, 3.0) + 5.574 * pow(b, 4.0) + 0.245 * pow(b, 5.0);
-    let l = log(clamp(c, vec3<f32>(1e-4), vec3<f32>(1.0))) / d;
+    return 1.0 / d;
+}
+
+// σ_a = (ln c · scale)², scale = weft_hair_sigma_a_scale(β_n).
+fn weft_hair_sigma_a_scaled(c: vec3<f32>, scale: f32) -> vec3<f32> {
+    let l = log(clamp(c, vec3<f32>(1e-4), vec3<f32>(1.0))) * scale;
     return l * l;
 }
 
@@ -96,6 +117,19 @@ fn weft_hair_params(sigma_a: vec3<f32>, eta: f32, beta_m: f32, beta_n: f32, alph
     let c2 = c1 * c1 - s1 * s1;
     hair.sin2k = vec3<f32>(s0, s1, s2);
     hair.cos2k = vec3<f32>(c0, c1, c2);
+    // The fast tier's (weft_hair_fast, where each is explained).
+    hair.inv_v = vec3<f32>(1.0, 4.0, 0.25) / v;
+    // e^(-2/v_R) = (e^(-2/v_TRT))^4, e^(-2/v_TT) = (e^(-2/v_R))^4: one exp.
+    let e_trt = exp(-0.5 * hair.inv_v.x);
+    let e_r = weft_hair_sqr(e_trt * e_trt);
+    hair.mp_norm = hair.inv_v / (vec3<f32>(1.0) - vec3<f32>(e_r, weft_hair_sqr(e_r * e_r), e_trt));
+    let d = 0.45 * WEFT_PI * 0.577350 * hair.s;
+    hair.blur = vec2<f32>(sin(d), cos(d));
+    hair.r_floor = weft_hair_sqr(0.4534 * hair.s);
+    let sh = hair.s;
+    hair.trt = vec4<f32>(-9.2609 + sh * (65.993 - 107.38 * sh), 72.357 + sh * (-624.68 + 1069.8 * sh),
+                         -153.75 + sh * (1704.7 - 3127.5 * sh), -67.745 + sh * (-1105.8 + 2706.6 * sh));
+    hair.trt4 = 239.74 - 430.94 * sh;
     return hair;
 }
 
@@ -428,11 +462,10 @@ fn weft_hair_fast(hair: WeftHair, t: vec3<f32>, o: vec3<f32>, i: vec3<f32>) -> W
         cos_o * hair.cos2k.y + sin_o * hair.sin2k.y,
         cos_o * hair.cos2k.x - sin_o * hair.sin2k.x,
         cos_o * hair.cos2k.z - sin_o * hair.sin2k.z));
-    let inv_v = vec3<f32>(1.0, 4.0, 0.25) / hair.v.x;
-    // e^(-2/v_R) = (e^(-2/v_TRT))^4, e^(-2/v_TT) = (e^(-2/v_R))^4: one exp.
-    let e_trt = exp(-0.5 * inv_v.x);
-    let e_r = weft_hair_sqr(e_trt * e_trt);
-    let norm = inv_v / (vec3<f32>(1.0) - vec3<f32>(e_r, weft_hair_sqr(e_r * e_r), e_trt));
+    // 1/v_p and the normalisation 1/(v_p (1 - e^(-2/v_p))): hair.inv_v,
+    // hair.mp_norm (weft_hair_params).
+    let inv_v = hair.inv_v;
+    let norm = hair.mp_norm;
     let x = cos_i * co * inv_v;
     let u = 1.0 / (1.0 + 0.7 * x);
     let bessel = (1.0 + u * (1.0 - u) * (0.181903 + u * (-0.401835 + u * 3.1851))) * inverseSqrt(1.0 + 2.0 * WEFT_PI * x);
@@ -444,17 +477,17 @@ fn weft_hair_fast(hair: WeftHair, t: vec3<f32>, o: vec3<f32>, i: vec3<f32>) -> W
     let a = cos_o * inverseSqrt(max(hair.eta * hair.eta - sin_o * sin_o, 1e-8));
     // The logistic's standard deviation is πs/√3; the blur's half-step in
     // φ/2 is δ/2 = 0.45 πs/√3 (0.45 fitted: the two-point mean of TT's
-    // smooth limit within 2-4 % of the 3000-offset average at β_n 0.3-0.4).
-    let d = 0.45 * WEFT_PI * 0.577350 * hair.s;
-    let sd = sin(d);
-    let cd = cos(d);
+    // smooth limit within 2-4 % of the 3000-offset average at β_n 0.3-0.4):
+    // (sin, cos) of it in hair.blur.
+    let sd = hair.blur.x;
+    let cd = hair.blur.y;
 
     // R: Φ_0 = -2γ_o meets φ at γ_o = -φ/2 only, so ⟨N_R⟩_h = |dh/dφ| / 2 =
     // cos(φ/2) / 4 and A_R = F(cos θ_o cos(φ/2)) (Karis 2016's N_R and A_R).
     // The logistic rounds the kink at φ = π where cos(φ/2) -> 0 and F -> 1:
     // cos(φ/2) -> √(cos²(φ/2) + (σ/4)²), σ = πs/√3 (σ/4 = 0.4534 s, fitted:
     // the value at φ = π within 7 % of the reference's at β_n 0.3-0.4).
-    let c_r = sqrt(min(0.5 + 0.5 * cos_phi + weft_hair_sqr(0.4534 * hair.s), 1.0));
+    let c_r = sqrt(min(0.5 + 0.5 * cos_phi + hair.r_floor, 1.0));
     let r = 0.25 * c_r * weft_f_dielectric(cos_o * c_r, hair.eta);
 
     // TT: sin((φ ± δ)/2) by the angle sum.
@@ -480,10 +513,11 @@ fn weft_hair_fast(hair: WeftHair, t: vec3<f32>, o: vec3<f32>, i: vec3<f32>) -> W
     // the reference's peak: log s_TRT² fitted over a = 1/η' and s (least
     // squares, 192 cases: η 1.45-1.65, θ_o 0-76°, β_n 0.2-0.6; s_TRT within
     // 8.5 % at the grid's β_n; Karis's fixed exp(17 cos φ - 16.78) is this
-    // lobe for one η and β_n). Never narrower than the logistic itself.
-    let s2_fit = -9.2609 + a * (72.357 + a * (-153.75 + a * (-67.745 + a * 239.74)))
-        + hair.s * ((65.993 + a * (-624.68 + a * (1704.7 + a * (-1105.8 - a * 430.94))))
-        + hair.s * (-107.38 + a * (1069.8 + a * (-3127.5 + a * 2706.6))));
+    // lobe for one η and β_n). Never narrower than the logistic itself. The
+    // fit, -9.2609 + 72.357a - 153.75a² - 67.745a³ + 239.74a⁴ + s (65.993 -
+    // 624.68a + 1704.7a² - 1105.8a³ - 430.94a⁴) + s² (-107.38 + 1069.8a -
+    // 3127.5a² + 2706.6a³), as a polynomial in a (hair.trt, hair.trt4).
+    let s2_fit = hair.trt.x + a * (hair.trt.y + a * (hair.trt.z + a * (hair.trt.w + a * hair.trt4)));
     let s_trt = sqrt(max(exp(clamp(s2_fit, -9.0, 2.5)), hair.s * hair.s));
     let n_trt = weft_hair_trimmed_logistic(acos(cos_phi), s_trt);
 

@@ -1,0 +1,476 @@
+#version 450 core
+struct WeftFrame {
+    mat4x4 view_proj;
+    mat4x4 view;
+    vec4 camera_position;
+    vec4 light_direction;
+    vec4 light_color;
+    vec4 sh[9];
+    vec4 params;
+    vec4 viewport;
+};
+struct WeftObject {
+    mat4x4 model;
+    mat4x4 normal_matrix;
+};
+struct WeftMaterial {
+    vec4 base_color;
+    vec4 base_map_st;
+    uint strand_along_tangent;
+    vec4 jitter_map_st;
+    float jitter_strength;
+    float anisotropic_direction;
+    float strand_noise;
+    float strand_density;
+    vec4 primary_color;
+    float primary_exponent;
+    float primary_intensity;
+    float primary_shift;
+    vec4 secondary_color;
+    float secondary_exponent;
+    float secondary_intensity;
+    float secondary_shift;
+    float roughness;
+    float azimuthal_roughness;
+    float scale_angle;
+    float ior;
+    vec4 outline_color;
+    float outline_width;
+    float outline_max_distance;
+    vec4 fringe_shadow_color;
+    float fringe_shadow_length;
+};
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftVertexInput {
+    vec3 position;
+    vec3 normal;
+    vec4 tangent;
+    vec2 uv0_;
+};
+struct WeftVaryings {
+    vec4 clip_position;
+    vec3 world_position;
+    vec3 world_normal;
+    vec4 world_tangent;
+    vec2 uv0_;
+};
+struct WeftHair {
+    vec3 sigma_a;
+    float eta;
+    vec4 v;
+    float s;
+    vec3 sin2k;
+    vec3 cos2k;
+    vec3 inv_v;
+    vec3 mp_norm;
+    vec2 blur;
+    float r_floor;
+    vec4 trt;
+    float trt4_;
+};
+struct WeftHairLobes {
+    vec3 s;
+    vec3 albedo;
+    vec3 back;
+};
+struct WeftHairAngles {
+    vec4 theta;
+    float phi;
+};
+struct HairVaryings {
+    vec4 clip_position;
+    vec3 world_position;
+    vec3 world_normal;
+    vec4 world_tangent;
+    vec2 uv0_;
+    vec4 fibre;
+    vec4 sin2k;
+    vec4 cos2k;
+    vec4 mp_norm;
+    vec4 inv_v;
+    vec4 trt;
+};
+const float WEFT_PI = 3.1415927;
+const float WEFT_INV_PI = 0.31830987;
+const uint TIER_FAST = 0u;
+const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
+const float WEFT_MIN_ROUGHNESS = 0.045;
+const float WEFT_MIN_N_DOT = 0.0001;
+const float WEFT_MAX_HALF = 65504.0;
+const float WEFT_DIELECTRIC_F0_ = 0.04;
+const float WEFT_HAIR_MIN_BETA_M = 0.05;
+const float WEFT_HAIR_MIN_BETA_N = 0.05;
+const uint HAIR_REFERENCE_CELLS = 64u;
+const float HAIR_TERMINATOR = 0.25;
+
+layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
+
+layout(std140, binding = 2) uniform WeftObject_block_1Vertex { WeftObject _group_2_binding_0_vs; };
+
+layout(std140, binding = 1) uniform WeftMaterial_block_2Vertex { WeftMaterial _group_1_binding_0_vs; };
+
+layout(location = 0) in vec3 _p2vs_location0;
+layout(location = 1) in vec3 _p2vs_location1;
+layout(location = 2) in vec4 _p2vs_location2;
+layout(location = 3) in vec2 _p2vs_location3;
+layout(location = 0) smooth out vec3 _vs2fs_location0;
+layout(location = 1) smooth out vec3 _vs2fs_location1;
+layout(location = 2) smooth out vec4 _vs2fs_location2;
+layout(location = 3) smooth out vec2 _vs2fs_location3;
+layout(location = 4) flat out vec4 _vs2fs_location4;
+layout(location = 5) flat out vec4 _vs2fs_location5;
+layout(location = 6) flat out vec4 _vs2fs_location6;
+layout(location = 7) flat out vec4 _vs2fs_location7;
+layout(location = 8) flat out vec4 _vs2fs_location8;
+layout(location = 9) flat out vec4 _vs2fs_location9;
+
+vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
+}
+
+vec3 weft_any_perpendicular(vec3 n) {
+    float s_2 = ((n.z >= 0.0) ? 1.0 : -1.0);
+    float a_2 = (-1.0 / (s_2 + n.z));
+    float b = ((n.x * n.y) * a_2);
+    return vec3((1.0 + (((s_2 * n.x) * n.x) * a_2)), (s_2 * b), (-(s_2) * n.x));
+}
+
+float weft_f_dielectric(float cos_i, float eta) {
+    float c_1 = clamp(abs(cos_i), WEFT_MIN_N_DOT, 1.0);
+    float g2_ = (((eta * eta) - 1.0) + (c_1 * c_1));
+    float g = sqrt(max(g2_, 0.0));
+    float gmc = (g - c_1);
+    float gpc = max((g + c_1), 1e-7);
+    float a_3 = (gmc / gpc);
+    float b_1 = (((c_1 * gpc) - 1.0) / max(((c_1 * gmc) + 1.0), 1e-7));
+    float f = clamp((((0.5 * a_3) * a_3) * (1.0 + (b_1 * b_1))), 0.0, 1.0);
+    return ((g2_ < 0.0) ? 1.0 : f);
+}
+
+vec3 weft_main_light_direction() {
+    vec4 _e2 = _group_0_binding_0_vs.light_direction;
+    vec3 _e8 = weft_safe_normalize(_e2.xyz, vec3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+vec3 weft_main_light_radiance() {
+    vec4 _e2 = _group_0_binding_0_vs.light_color;
+    return max(_e2.xyz, vec3(0.0));
+}
+
+vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
+    vec4 _e4 = _group_0_binding_0_vs.camera_position;
+    vec3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+vec3 weft_sh_irradiance(vec3 n_1) {
+    vec3 e = vec3(0.0);
+    vec4 sh[9] = _group_0_binding_0_vs.sh;
+    e = (sh[0].xyz * 0.282095);
+    vec3 _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
+    vec3 _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_1.z)));
+    vec3 _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_1.x)));
+    vec3 _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_1.x) * n_1.y)));
+    vec3 _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_1.y) * n_1.z)));
+    vec3 _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0))));
+    vec3 _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_1.x) * n_1.z)));
+    vec3 _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    vec3 _e91 = e;
+    return max(_e91, vec3(0.0));
+}
+
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftVaryings weft_forward_vertex(WeftVertexInput in_2) {
+    WeftVaryings out_ = WeftVaryings(vec4(0.0), vec3(0.0), vec3(0.0), vec4(0.0), vec2(0.0));
+    mat4x4 model = _group_2_binding_0_vs.model;
+    mat3x3 model3_ = mat3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    mat4x4 nm = _group_2_binding_0_vs.normal_matrix;
+    mat3x3 normal3_ = mat3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    vec4 world = (model * vec4(in_2.position, 1.0));
+    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
+    float bitangent_sign = (((in_2.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
+    mat4x4 _e43 = _group_0_binding_0_vs.view_proj;
+    out_.clip_position = (_e43 * vec4(world.xyz, 1.0));
+    out_.world_position = world.xyz;
+    vec3 _e55 = weft_safe_normalize((normal3_ * in_2.normal), vec3(0.0));
+    out_.world_normal = _e55;
+    vec3 _e62 = weft_safe_normalize((model3_ * in_2.tangent.xyz), vec3(0.0));
+    out_.world_tangent = vec4(_e62, bitangent_sign);
+    out_.uv0_ = in_2.uv0_;
+    WeftVaryings _e66 = out_;
+    return _e66;
+}
+
+mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
+    vec3 t_in = tangent.xyz;
+    vec3 t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    float len2_1 = dot(t_proj, t_proj);
+    bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
+    vec3 _e13 = weft_any_perpendicular(n_2);
+    vec3 t_2 = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
+    float s_3 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    vec3 b_2 = (cross(n_2, t_2) * s_3);
+    return mat3x3(t_2, b_2, n_2);
+}
+
+vec2 weft_transform_uv(vec2 uv, vec4 st) {
+    return ((uv * st.xy) + st.zw);
+}
+
+float weft_hair_sqr(float x) {
+    return (x * x);
+}
+
+float weft_hair_safe_sqrt(float x_1) {
+    return sqrt(max(x_1, 0.0));
+}
+
+float weft_hair_variance(float beta_m) {
+    float b_3 = clamp(beta_m, WEFT_HAIR_MIN_BETA_M, 1.0);
+    float b2_ = (b_3 * b_3);
+    float b4_ = (b2_ * b2_);
+    float b20_ = ((((b4_ * b4_) * b4_) * b4_) * b4_);
+    float _e18 = weft_hair_sqr((((0.726 * b_3) + (0.812 * b2_)) + (3.7 * b20_)));
+    return _e18;
+}
+
+float weft_hair_logistic_scale(float beta_n) {
+    float b_4 = clamp(beta_n, WEFT_HAIR_MIN_BETA_N, 1.0);
+    float b2_1 = (b_4 * b_4);
+    float b4_1 = (b2_1 * b2_1);
+    float b22_ = (((((b4_1 * b4_1) * b4_1) * b4_1) * b4_1) * b2_1);
+    return (0.62665707 * (((0.265 * b_4) + (1.194 * b2_1)) + (5.372 * b22_)));
+}
+
+vec3 weft_hair_sigma_a_scaled(vec3 c, float scale_1) {
+    vec3 l = (log(clamp(c, vec3(0.0001), vec3(1.0))) * scale_1);
+    return (l * l);
+}
+
+float weft_hair_sigma_a_scale(float beta_n_1) {
+    float b_5 = clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1.0);
+    float d = (((((5.969 - (0.215 * b_5)) + ((2.532 * b_5) * b_5)) - (10.73 * pow(b_5, 3.0))) + (5.574 * pow(b_5, 4.0))) + (0.245 * pow(b_5, 5.0)));
+    return (1.0 / d);
+}
+
+WeftHair weft_hair_params(vec3 sigma_a, float eta_1, float beta_m_1, float beta_n_2, float alpha_deg) {
+    WeftHair hair = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0, vec4(0.0), 0.0);
+    hair.sigma_a = max(sigma_a, vec3(0.0));
+    hair.eta = max(eta_1, 1.0001);
+    float _e13 = weft_hair_variance(beta_m_1);
+    hair.v = vec4(_e13, (0.25 * _e13), (4.0 * _e13), (4.0 * _e13));
+    float _e23 = weft_hair_logistic_scale(beta_n_2);
+    hair.s = _e23;
+    float a_4 = radians(alpha_deg);
+    float s0_ = sin(a_4);
+    float _e29 = weft_hair_safe_sqrt((1.0 - (s0_ * s0_)));
+    float s1_ = ((2.0 * _e29) * s0_);
+    float c1_ = ((_e29 * _e29) - (s0_ * s0_));
+    float s2_ = ((2.0 * c1_) * s1_);
+    float c2_ = ((c1_ * c1_) - (s1_ * s1_));
+    hair.sin2k = vec3(s0_, s1_, s2_);
+    hair.cos2k = vec3(_e29, c1_, c2_);
+    hair.inv_v = (vec3(1.0, 4.0, 0.25) / vec3(_e13));
+    float _e55 = hair.inv_v.x;
+    float e_trt = exp((-0.5 * _e55));
+    float _e60 = weft_hair_sqr((e_trt * e_trt));
+    vec3 _e63 = hair.inv_v;
+    float _e67 = weft_hair_sqr((_e60 * _e60));
+    hair.mp_norm = (_e63 / (vec3(1.0) - vec3(_e60, _e67, e_trt)));
+    float _e73 = hair.s;
+    float d_1 = (0.8162094 * _e73);
+    hair.blur = vec2(sin(d_1), cos(d_1));
+    float _e81 = hair.s;
+    float _e84 = weft_hair_sqr((0.4534 * _e81));
+    hair.r_floor = _e84;
+    float sh_1 = hair.s;
+    hair.trt = vec4((-9.2609 + (sh_1 * (65.993 - (107.38 * sh_1)))), (72.357 + (sh_1 * (-624.68 + (1069.8 * sh_1)))), (-153.75 + (sh_1 * (1704.7 - (3127.5 * sh_1)))), (-67.745 + (sh_1 * (-1105.8 + (2706.6 * sh_1)))));
+    hair.trt4_ = (239.74 - (430.94 * sh_1));
+    WeftHair _e122 = hair;
+    return _e122;
+}
+
+float weft_hair_logistic(float x_2, float s) {
+    float e_1 = exp((-(abs(x_2)) / s));
+    float _e8 = weft_hair_sqr((1.0 + e_1));
+    return (e_1 / (s * _e8));
+}
+
+float weft_hair_trimmed_logistic(float x_3, float s_1) {
+    float e_2 = exp((-3.1415927 / s_1));
+    float _e5 = weft_hair_logistic(x_3, s_1);
+    return ((_e5 * (1.0 + e_2)) / (1.0 - e_2));
+}
+
+WeftHairAngles weft_hair_angles(vec3 t, vec3 o, vec3 i) {
+    WeftHairAngles out_1 = WeftHairAngles(vec4(0.0), 0.0);
+    float sin_o = clamp(dot(o, t), -1.0, 1.0);
+    float sin_i = clamp(dot(i, t), -1.0, 1.0);
+    float _e16 = weft_hair_safe_sqrt((1.0 - (sin_o * sin_o)));
+    float _e20 = weft_hair_safe_sqrt((1.0 - (sin_i * sin_i)));
+    out_1.theta = vec4(sin_o, _e16, sin_i, _e20);
+    vec3 o_perp = (o - (sin_o * t));
+    vec3 i_perp = (i - (sin_i * t));
+    float len2_2 = (dot(o_perp, o_perp) * dot(i_perp, i_perp));
+    float cos_phi = ((len2_2 > 1e-12) ? (dot(o_perp, i_perp) * inversesqrt(max(len2_2, 1e-30))) : 1.0);
+    out_1.phi = acos(clamp(cos_phi, -1.0, 1.0));
+    WeftHairAngles _e43 = out_1;
+    return _e43;
+}
+
+vec3 weft_hair_fast_tt_density(float sin_half, float a) {
+    float rho2_ = ((1.0 - ((2.0 * a) * sin_half)) + (a * a));
+    float inv_rho = inversesqrt(max(rho2_, 1e-8));
+    float cos_go = (max((sin_half - a), 0.0) * inv_rho);
+    float cos_gt = ((1.0 - (a * sin_half)) * inv_rho);
+    return vec3(cos_go, cos_gt, (((0.25 * cos_go) * cos_gt) * inv_rho));
+}
+
+vec3 weft_hair_fast_tt(float sin_plus, float sin_minus, float a_1, float cos_o, float eta_2, vec3 sigma_a_1, float chord) {
+    vec3 _e7 = weft_hair_fast_tt_density(sin_plus, a_1);
+    vec3 _e8 = weft_hair_fast_tt_density(sin_minus, a_1);
+    float _e11 = weft_f_dielectric((cos_o * _e7.x), eta_2);
+    float _e19 = weft_hair_sqr((1.0 - _e11));
+    return (exp((-(sigma_a_1) * (chord * _e7.y))) * ((_e19 * 0.5) * (_e7.z + _e8.z)));
+}
+
+WeftHairLobes weft_hair_fast(WeftHair hair_1, vec3 t_1, vec3 o_1, vec3 i_1) {
+    WeftHairLobes out_2 = WeftHairLobes(vec3(0.0), vec3(0.0), vec3(0.0));
+    float sin_o_1 = clamp(dot(o_1, t_1), -1.0, 1.0);
+    float sin_i_1 = clamp(dot(i_1, t_1), -1.0, 1.0);
+    float _e15 = weft_hair_safe_sqrt((1.0 - (sin_o_1 * sin_o_1)));
+    float _e19 = weft_hair_safe_sqrt((1.0 - (sin_i_1 * sin_i_1)));
+    vec3 o_perp_1 = (o_1 - (sin_o_1 * t_1));
+    vec3 i_perp_1 = (i_1 - (sin_i_1 * t_1));
+    float len2_3 = (dot(o_perp_1, o_perp_1) * dot(i_perp_1, i_perp_1));
+    float cos_phi_1 = clamp(((len2_3 > 1e-12) ? (dot(o_perp_1, i_perp_1) * inversesqrt(max(len2_3, 1e-30))) : 1.0), -1.0, 1.0);
+    float cos_half = sqrt((0.5 + (0.5 * cos_phi_1)));
+    float sin_half_1 = sqrt((0.5 - (0.5 * cos_phi_1)));
+    vec3 so = vec3(((sin_o_1 * hair_1.cos2k.y) - (_e15 * hair_1.sin2k.y)), ((sin_o_1 * hair_1.cos2k.x) + (_e15 * hair_1.sin2k.x)), ((sin_o_1 * hair_1.cos2k.z) + (_e15 * hair_1.sin2k.z)));
+    vec3 co = abs(vec3(((_e15 * hair_1.cos2k.y) + (sin_o_1 * hair_1.sin2k.y)), ((_e15 * hair_1.cos2k.x) - (sin_o_1 * hair_1.sin2k.x)), ((_e15 * hair_1.cos2k.z) - (sin_o_1 * hair_1.sin2k.z))));
+    vec3 inv_v = hair_1.inv_v;
+    vec3 norm = hair_1.mp_norm;
+    vec3 x_6 = ((_e19 * co) * inv_v);
+    vec3 u = (vec3(1.0) / (vec3(1.0) + (0.7 * x_6)));
+    vec3 bessel = ((vec3(1.0) + ((u * (vec3(1.0) - u)) * (vec3(0.181903) + (u * (vec3(-0.401835) + (u * 3.1851)))))) * inversesqrt((vec3(1.0) + (6.2831855 * x_6))));
+    vec3 mp = ((exp(min(((((_e19 * co) - (sin_i_1 * so)) - vec3(1.0)) * inv_v), vec3(0.0))) * bessel) * norm);
+    float sin_t = (sin_o_1 / hair_1.eta);
+    float _e148 = weft_hair_safe_sqrt((1.0 - (sin_t * sin_t)));
+    float chord_1 = (2.0 / max(_e148, 0.0001));
+    float a_5 = (_e15 * inversesqrt(max(((hair_1.eta * hair_1.eta) - (sin_o_1 * sin_o_1)), 1e-8)));
+    float sd = hair_1.blur.x;
+    float cd = hair_1.blur.y;
+    float c_r = sqrt(min(((0.5 + (0.5 * cos_phi_1)) + hair_1.r_floor), 1.0));
+    float _e179 = weft_f_dielectric((_e15 * c_r), hair_1.eta);
+    float r = ((0.25 * c_r) * _e179);
+    vec3 _e189 = weft_hair_fast_tt(((sin_half_1 * cd) + (cos_half * sd)), ((sin_half_1 * cd) - (cos_half * sd)), a_5, _e15, hair_1.eta, hair_1.sigma_a, chord_1);
+    float h_f = (0.6243 + (0.1898 * _e15));
+    float _e197 = weft_hair_safe_sqrt((1.0 - (h_f * h_f)));
+    float _e200 = weft_f_dielectric((_e15 * _e197), hair_1.eta);
+    float h2_ = (0.4824 + (0.2778 * _e15));
+    float _e208 = weft_hair_safe_sqrt((1.0 - (h2_ * h2_)));
+    float _e211 = weft_f_dielectric((_e15 * _e208), hair_1.eta);
+    float _e219 = weft_hair_safe_sqrt((1.0 - (((h2_ * h2_) * a_5) * a_5)));
+    vec3 t2_ = exp((-(hair_1.sigma_a) * (chord_1 * _e219)));
+    float _e225 = weft_hair_sqr((1.0 - _e211));
+    vec3 a2_ = (((_e225 * _e211) * t2_) * t2_);
+    vec3 ft = (_e200 * t2_);
+    vec3 a3_ = ((a2_ * ft) / (vec3(1.0) - ft));
+    float s2_fit = (hair_1.trt.x + (a_5 * (hair_1.trt.y + (a_5 * (hair_1.trt.z + (a_5 * (hair_1.trt.w + (a_5 * hair_1.trt4_))))))));
+    float s_trt = sqrt(max(exp(clamp(s2_fit, -9.0, 2.5)), (hair_1.s * hair_1.s)));
+    float _e262 = weft_hair_trimmed_logistic(acos(cos_phi_1), s_trt);
+    out_2.s = ((vec3((mp.x * r)) + (mp.y * _e189)) + (mp.z * ((a2_ * _e262) + (a3_ * 0.15915494))));
+    out_2.back = (vec3(_e200) + a2_);
+    float _e284 = weft_hair_sqr((1.0 - _e211));
+    out_2.albedo = (((vec3(_e200) + (_e284 * t2_)) + a2_) + a3_);
+    WeftHairLobes _e290 = out_2;
+    return _e290;
+}
+
+WeftHair hair_from_varyings(HairVaryings in_3, vec3 sigma_a_2) {
+    float v_1 = in_3.fibre.z;
+    return WeftHair(max(sigma_a_2, vec3(0.0)), in_3.fibre.x, vec4(v_1, (0.25 * v_1), (4.0 * v_1), (4.0 * v_1)), in_3.fibre.y, in_3.sin2k.xyz, in_3.cos2k.xyz, in_3.inv_v.xyz, in_3.mp_norm.xyz, vec2(in_3.cos2k.w, in_3.mp_norm.w), in_3.sin2k.w, vec4(in_3.inv_v.w, in_3.trt.xyz), in_3.trt.w);
+}
+
+float hair_hash(uint x_4) {
+    uint state = ((x_4 * 747796405u) + 2891336453u);
+    uint word = (((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u);
+    return (float(((word >> 22u) ^ word)) * 2.3283064e-10);
+}
+
+float hair_value_noise(float x_5, float period) {
+    float p = max(roundEven(period), 1.0);
+    float cell = floor(x_5);
+    float f_1 = (x_5 - cell);
+    float c0_ = (cell - (p * floor((cell / p))));
+    float c1_1 = (((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0));
+    float _e19 = hair_hash(uint(c0_));
+    float _e21 = hair_hash(uint(c1_1));
+    return (mix(_e19, _e21, ((f_1 * f_1) * (3.0 - (2.0 * f_1)))) - 0.5);
+}
+
+void main() {
+    WeftVertexInput in_ = WeftVertexInput(_p2vs_location0, _p2vs_location1, _p2vs_location2, _p2vs_location3);
+    WeftHair h = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0, vec4(0.0), 0.0);
+    float scale = 0.0;
+    WeftVaryings _e1 = weft_forward_vertex(in_);
+    float _e6 = _group_1_binding_0_vs.ior;
+    float _e9 = _group_1_binding_0_vs.roughness;
+    float _e12 = _group_1_binding_0_vs.azimuthal_roughness;
+    float _e15 = _group_1_binding_0_vs.scale_angle;
+    WeftHair _e16 = weft_hair_params(vec3(0.0), _e6, _e9, _e12, _e15);
+    h = _e16;
+    {
+        float _e22 = _group_1_binding_0_vs.azimuthal_roughness;
+        float _e23 = weft_hair_sigma_a_scale(_e22);
+        scale = _e23;
+    }
+    float _e30 = h.eta;
+    float _e32 = h.s;
+    float _e35 = h.v.x;
+    float _e36 = scale;
+    vec3 _e39 = h.sin2k;
+    float _e41 = h.r_floor;
+    vec3 _e44 = h.cos2k;
+    float _e47 = h.blur.x;
+    vec3 _e50 = h.mp_norm;
+    float _e53 = h.blur.y;
+    vec3 _e56 = h.inv_v;
+    float _e59 = h.trt.x;
+    vec4 _e62 = h.trt;
+    float _e65 = h.trt4_;
+    HairVaryings _tmp_return = HairVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, vec4(_e30, _e32, _e35, _e36), vec4(_e39, _e41), vec4(_e44, _e47), vec4(_e50, _e53), vec4(_e56, _e59), vec4(_e62.yzw, _e65));
+    gl_Position = _tmp_return.clip_position;
+    _vs2fs_location0 = _tmp_return.world_position;
+    _vs2fs_location1 = _tmp_return.world_normal;
+    _vs2fs_location2 = _tmp_return.world_tangent;
+    _vs2fs_location3 = _tmp_return.uv0_;
+    _vs2fs_location4 = _tmp_return.fibre;
+    _vs2fs_location5 = _tmp_return.sin2k;
+    _vs2fs_location6 = _tmp_return.cos2k;
+    _vs2fs_location7 = _tmp_return.mp_norm;
+    _vs2fs_location8 = _tmp_return.inv_v;
+    _vs2fs_location9 = _tmp_return.trt;
+    gl_Position.yz = vec2(-gl_Position.y, gl_Position.z * 2.0 - gl_Position.w);
+    return;
+}
+
