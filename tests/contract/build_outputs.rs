@@ -339,7 +339,7 @@ fn module_vertex_inputs(module: &naga::Module) -> Vec<(u32, String)> {
 
 /// The metadata of one compiled shader (`name` is its WGSL file) agrees with
 /// what naga finds in the emitted module: hash, material uniform layout,
-/// bindings, entry points (every pass's among them) and vertex inputs
+/// bindings, entry points (exactly those its passes name) and vertex inputs
 /// (locations, formats and the engine interface's names for them).
 fn assert_metadata_matches_module(name: &str, shader: &VariantShader, passes: &[&Pass]) {
     let wgsl = &shader.files["wgsl"][0];
@@ -413,6 +413,17 @@ fn assert_metadata_matches_module(name: &str, shader: &VariantShader, passes: &[
                 && eps.contains(&pass.fragment_entry.as_str()),
             "{name}: pass {}",
             pass.name
+        );
+    }
+    // And no other: a library's entry point that no pass of the variant
+    // names (lib/forward.wgsl's `vs_main` beside microcylinder's and hair's
+    // own vertex stages) is not in its outputs.
+    for ep in &eps {
+        assert!(
+            passes
+                .iter()
+                .any(|p| p.vertex_entry == *ep || p.fragment_entry == *ep),
+            "{name}: entry point `{ep}` is named by no pass"
         );
     }
 
