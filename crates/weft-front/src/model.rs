@@ -309,7 +309,11 @@ impl Param {
 }
 
 impl Material {
-    /// The entry points variant `key`'s passes name (vertex and fragment).
+    /// The entry points variant `key`'s passes name (vertex and fragment):
+    /// the compiler keeps these and removes every other the WGSL defines
+    /// (passes the variant does not have; a library's entry point no pass
+    /// uses, such as lib/forward.wgsl's `vs_main` beside a material's own
+    /// vertex stage) with the code only they reach.
     pub fn kept_entry_points(&self, key: &VariantKey) -> Vec<String> {
         let mut kept: Vec<String> = Vec::new();
         for p in self.passes_of(key) {
@@ -320,26 +324,6 @@ impl Material {
             }
         }
         kept
-    }
-
-    /// Entry points of the WGSL (`defined`) that no pass of variant `key`
-    /// names: those of passes the variant does not have, and any a shared
-    /// library defines that this material's passes do not use (lib/forward.wgsl's
-    /// `vs_main` where a material has a vertex stage of its own). The compiler
-    /// removes them (and the code only they reach) from the variant's module.
-    pub fn dropped_entry_points<'a>(
-        &self,
-        key: &VariantKey,
-        defined: impl IntoIterator<Item = &'a str>,
-    ) -> Vec<String> {
-        let kept = self.kept_entry_points(key);
-        let mut dropped: Vec<String> = Vec::new();
-        for name in defined {
-            if !kept.iter().any(|k| k == name) && !dropped.iter().any(|d| d == name) {
-                dropped.push(name.to_string());
-            }
-        }
-        dropped
     }
 
     /// The passes variant `key` has: those whose `when` holds there, in

@@ -17,9 +17,10 @@ use std::collections::{HashMap, HashSet};
 #[derive(Clone, Debug, Default)]
 pub struct Bindings {
     pub values: HashMap<String, Literal>,
-    /// Entry points to remove (those of passes the variant does not have),
-    /// with the code only they reach.
-    pub drop_entry_points: Vec<String>,
+    /// The entry points to keep (those the variant's passes name): every
+    /// other - a pass the variant does not have, a library's entry point no
+    /// pass uses - goes, with the code only it reaches. `None` keeps all.
+    pub keep_entry_points: Option<Vec<String>>,
 }
 
 /// Returns the specialised module; validation is the caller's.
@@ -47,7 +48,9 @@ pub fn specialise(module: &Module, values: &Bindings) -> Module {
     }
     module.functions = functions;
     let mut entry_points = std::mem::take(&mut module.entry_points);
-    entry_points.retain(|ep| !values.drop_entry_points.contains(&ep.name));
+    if let Some(keep) = &values.keep_entry_points {
+        entry_points.retain(|ep| keep.contains(&ep.name));
+    }
     for ep in entry_points.iter_mut() {
         specialise_function(&module, &mut ep.function, &replace);
     }

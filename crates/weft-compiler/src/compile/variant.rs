@@ -72,8 +72,7 @@ pub fn compile_variant(
 ) -> Result<CompiledVariant, String> {
     let id = key.id(m);
     let mut values = Bindings {
-        drop_entry_points: m
-            .dropped_entry_points(key, module.entry_points.iter().map(|ep| ep.name.as_str())),
+        keep_entry_points: Some(m.kept_entry_points(key)),
         ..Bindings::default()
     };
     values

@@ -155,17 +155,7 @@ pub fn fold(module: &Module, request: &FoldRequest) -> Result<Folded, String> {
             .iter()
             .map(|(k, v)| (k.clone(), *v))
             .collect(),
-        drop_entry_points: module
-            .entry_points
-            .iter()
-            .filter(|ep| {
-                request
-                    .keep_entry_points
-                    .as_ref()
-                    .is_some_and(|keep| !keep.contains(&ep.name))
-            })
-            .map(|ep| ep.name.clone())
-            .collect(),
+        keep_entry_points: request.keep_entry_points.clone(),
     };
     let module = crate::compile::specialise::specialise(&module, &bindings);
 
