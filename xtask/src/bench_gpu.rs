@@ -201,6 +201,9 @@ struct TierRow {
     /// The model's executed cost ratio per family, in the summary's order.
     model_ratios: Vec<Option<f64>>,
     flip_mean: f64,
+    /// The material's `inputs_hash` when timed: the GPU model's report
+    /// ranks its costs only against timings of the same files.
+    inputs_hash: String,
 }
 
 /// One scene: generic vs specialised.
@@ -262,6 +265,7 @@ impl GpuReport {
                         .map(|r| r.drawn),
                     model_ratios,
                     flip_mean: t.flip_mean,
+                    inputs_hash: m.inputs_hash.clone(),
                 });
             }
         }

@@ -110,18 +110,57 @@ pub struct GpuTimings {
     pub file: String,
     /// The adapter as the report describes it.
     pub adapter: String,
-    /// (material, tier, GPU ms ÷ `standard` `fast`).
-    pub ratios: Vec<(String, String, TierRatio)>,
+    /// The tiers timed.
+    pub tiers: Vec<GpuTier>,
+    /// The model families the run paired its timings with, and ρ of each
+    /// against them as the run computed it: the model of the library it
+    /// timed (`spearman_model`).
+    pub recorded_rho: Vec<(String, Option<f64>)>,
+}
+
+/// One tier of a [`GpuTimings`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct GpuTier {
+    /// Material.
+    pub material: String,
+    /// Tier.
+    pub tier: String,
+    /// GPU ms ÷ `standard` `fast`.
+    pub ratio: TierRatio,
+    /// The material's `inputs_hash` when timed; absent in reports written
+    /// before 2026-11-29, which cannot tell which files they timed.
+    pub inputs_hash: Option<String>,
 }
 
 impl GpuTimings {
-    /// The ratio of `material` `tier`.
-    pub fn ratio(&self, material: &str, tier: &str) -> Option<TierRatio> {
-        self.ratios
+    /// The ratio of `material` `tier`, if it was timed on the material's
+    /// current files: the report recorded the `inputs_hash` the material's
+    /// metadata has now (`generated/<material>/<material>.meta.json`). A
+    /// timing of an earlier version of a tier does not rank today's.
+    pub fn current_ratio(&self, generated: &Path, material: &str, tier: &str) -> Option<TierRatio> {
+        let t = self
+            .tiers
             .iter()
-            .find(|(m, t, _)| m == material && t == tier)
-            .map(|r| r.2)
+            .find(|t| t.material == material && t.tier == tier)?;
+        (t.inputs_hash.as_deref()? == current_inputs_hash(generated, material)?).then_some(t.ratio)
     }
+
+    /// The run's own ρ against `family`'s model (of the library it timed).
+    pub fn recorded_rho(&self, family: &str) -> Option<f64> {
+        self.recorded_rho
+            .iter()
+            .find(|(f, _)| f == family)
+            .and_then(|r| r.1)
+    }
+}
+
+/// The `inputs_hash` of `material`'s committed metadata.
+fn current_inputs_hash(generated: &Path, material: &str) -> Option<String> {
+    let path = generated
+        .join(material)
+        .join(format!("{material}.meta.json"));
+    let json: serde_json::Value = serde_json::from_slice(&std::fs::read(path).ok()?).ok()?;
+    Some(json.get("inputs_hash")?.as_str()?.to_string())
 }
 
 /// Every committed real-GPU report under `generated/reports/` (`gpu-*.json`
@@ -141,28 +180,46 @@ pub fn committed_gpu_timings(generated: &Path) -> Vec<GpuTimings> {
         .filter_map(|file| {
             let json: serde_json::Value =
                 serde_json::from_slice(&std::fs::read(dir.join(&file)).ok()?).ok()?;
-            let ratios = json
-                .get("tiers")?
-                .as_array()?
-                .iter()
-                .filter_map(|t| {
-                    Some((
-                        t.get("material")?.as_str()?.to_string(),
-                        t.get("tier")?.as_str()?.to_string(),
-                        TierRatio {
-                            drawn: t.get("gpu_ratio")?.as_f64()?,
-                            f32_files: t.get("f32_files_ratio").and_then(|v| v.as_f64()),
-                        },
-                    ))
-                })
-                .collect();
-            Some(GpuTimings {
-                adapter: json.get("adapter")?.as_str()?.to_string(),
-                file,
-                ratios,
-            })
+            parse_gpu_timings(file, &json)
         })
         .collect()
+}
+
+/// A `cargo xtask bench gpu` JSON report's tiers and recorded ρ.
+pub fn parse_gpu_timings(file: String, json: &serde_json::Value) -> Option<GpuTimings> {
+    let str_of = |v: &serde_json::Value, key: &str| Some(v.get(key)?.as_str()?.to_string());
+    let tiers = json
+        .get("tiers")?
+        .as_array()?
+        .iter()
+        .filter_map(|t| {
+            Some(GpuTier {
+                material: str_of(t, "material")?,
+                tier: str_of(t, "tier")?,
+                ratio: TierRatio {
+                    drawn: t.get("gpu_ratio")?.as_f64()?,
+                    f32_files: t.get("f32_files_ratio").and_then(|v| v.as_f64()),
+                },
+                inputs_hash: str_of(t, "inputs_hash"),
+            })
+        })
+        .collect();
+    let families = json.get("families").and_then(|f| f.as_array());
+    let rhos = json.get("spearman_model").and_then(|r| r.as_array());
+    let recorded_rho = match (families, rhos) {
+        (Some(f), Some(r)) => f
+            .iter()
+            .zip(r)
+            .filter_map(|(f, r)| Some((f.as_str()?.to_string(), r.as_f64())))
+            .collect(),
+        _ => Vec::new(),
+    };
+    Some(GpuTimings {
+        adapter: str_of(json, "adapter")?,
+        file,
+        tiers,
+        recorded_rho,
+    })
 }
 
 /// Spearman's ρ (Pearson correlation of the ranks, ties given their mean rank).
@@ -251,5 +308,41 @@ mod tests {
         std::fs::remove_dir_all(&root).unwrap();
         assert_eq!((fast.f32_files(), fast.f16_files()), (1.5, None));
         assert_eq!((low.f32_files(), low.f16_files()), (1.4, Some(2.5)));
+    }
+
+    /// A GPU timing ranks a tier's cost only when it timed the material's
+    /// current files: same `inputs_hash`; another hash, or none (reports
+    /// before 2026-11-29), leaves the tier out. The run's own ρ per family
+    /// is kept for the report.
+    #[test]
+    fn gpu_timings_pair_only_with_the_files_they_timed() {
+        let root = std::env::temp_dir().join(format!("weft-gpu-timings-{}", std::process::id()));
+        for (m, hash) in [("a", "h1"), ("b", "h2-new"), ("c", "h3")] {
+            std::fs::create_dir_all(root.join(m)).unwrap();
+            std::fs::write(
+                root.join(m).join(format!("{m}.meta.json")),
+                format!(r#"{{"inputs_hash": "{hash}"}}"#),
+            )
+            .unwrap();
+        }
+        let json: serde_json::Value = serde_json::from_str(
+            r#"{"adapter": "GPU", "families": ["navi21", "gfx1100"], "spearman_model": [0.9, null],
+                "tiers": [
+                {"material": "a", "tier": "fast", "gpu_ratio": 2.0, "inputs_hash": "h1"},
+                {"material": "b", "tier": "fast", "gpu_ratio": 3.0, "inputs_hash": "h2-old"},
+                {"material": "c", "tier": "fast", "gpu_ratio": 4.0}
+            ]}"#,
+        )
+        .unwrap();
+        let g = parse_gpu_timings("gpu-gpu.json".into(), &json).unwrap();
+        let a = g.current_ratio(&root, "a", "fast");
+        let b = g.current_ratio(&root, "b", "fast");
+        let c = g.current_ratio(&root, "c", "fast");
+        let missing = g.current_ratio(&root, "a", "reference");
+        std::fs::remove_dir_all(&root).unwrap();
+        assert_eq!(a.map(|r| r.f32_files()), Some(2.0));
+        assert_eq!((b, c, missing), (None, None, None));
+        assert_eq!(g.recorded_rho("navi21"), Some(0.9));
+        assert_eq!(g.recorded_rho("gfx1100"), None);
     }
 }

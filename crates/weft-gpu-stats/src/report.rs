@@ -362,13 +362,19 @@ fn loop_table(o: &mut String, generated: &Path, f: &FamilyStats, rows: &[TierRow
     let gpus: Vec<String> = loop_report::committed_gpu_timings(generated)
         .iter()
         .map(|g| {
+            // Only timings of today's files rank today's costs.
             let timed: Vec<(&CostedRow, f64)> = costed
                 .iter()
                 .filter_map(|c| {
-                    let r = g.ratio(&c.model.material, &c.model.tier)?;
+                    let r = g.current_ratio(generated, &c.model.material, &c.model.tier)?;
                     Some((c, (c.files)(&r)?))
                 })
                 .collect();
+            let earlier = g
+                .tiers
+                .iter()
+                .filter(|t| g.current_ratio(generated, &t.material, &t.tier).is_none())
+                .count();
             let pairs: Vec<(f64, f64)> = timed
                 .iter()
                 .map(|(c, gpu)| (c.model.executed_cost / base.executed_cost, *gpu))
@@ -377,14 +383,40 @@ fn loop_table(o: &mut String, generated: &Path, f: &FamilyStats, rows: &[TierRow
                 .iter()
                 .map(|(c, gpu)| (c.model.static_cost, *gpu))
                 .collect();
-            format!(
-                "{} (`generated/reports/{}`, {} pairs): executed cost ρ = {}, static cost ρ = {}",
+            let then = g
+                .recorded_rho(&f.family)
+                .map_or("–".into(), |r| format!("{r:.3}"));
+            // A tier counts as timed on today's files when its material's
+            // `inputs_hash` is the one the report recorded (reports before
+            // 2026-11-29 recorded none).
+            if pairs.is_empty() {
+                return format!(
+                    "{} (`generated/reports/{}`): none of its {} tiers was timed on today's files \
+                     (the material's `inputs_hash`, recorded since 2026-11-29); the run's own ρ \
+                     against the model of the library it timed: {then}",
+                    g.adapter,
+                    g.file,
+                    g.tiers.len()
+                );
+            }
+            let mut line = format!(
+                "{} (`generated/reports/{}`, {} pairs timed on today's files): executed cost ρ = \
+                 {}, static cost ρ = {}",
                 g.adapter,
                 g.file,
                 pairs.len(),
                 rho(&pairs),
                 rho(&statics)
-            )
+            );
+            if earlier > 0 {
+                let _ = write!(
+                    line,
+                    " ({earlier} of its {} tiers, timed on an earlier version of their material, \
+                     left out; the run's own ρ against the model of then: {then})",
+                    g.tiers.len()
+                );
+            }
+            line
         })
         .collect();
     let _ = writeln!(
