@@ -112,9 +112,10 @@ float weft_f_dielectric(float cos_i, float eta) {
     float g = sqrt(max(g2_, 0.0));
     float gmc = (g - c_3);
     float gpc = max((g + c_3), 1e-7);
-    float a_2 = (gmc / gpc);
-    float b = (((c_3 * gpc) - 1.0) / max(((c_3 * gmc) + 1.0), 1e-7));
-    float f = clamp((((0.5 * a_2) * a_2) * (1.0 + (b * b))), 0.0, 1.0);
+    float b_den = max(((c_3 * gmc) + 1.0), 1e-7);
+    float b_num = ((c_3 * gpc) - 1.0);
+    float inv = (1.0 / (gpc * b_den));
+    float f = clamp(((((0.5 * gmc) * gmc) * ((b_den * b_den) + (b_num * b_num))) * (inv * inv)), 0.0, 1.0);
     return ((g2_ < 0.0) ? 1.0 : f);
 }
 
@@ -125,8 +126,8 @@ float weft_f0_from_ior(float ior) {
 
 float weft_v_smith_ggx_correlated(float n_dot_v, float n_dot_l, float roughness_2) {
     float _e3 = weft_clamp_roughness(roughness_2);
-    float a_3 = (_e3 * _e3);
-    float a2_1 = (a_3 * a_3);
+    float a_2 = (_e3 * _e3);
+    float a2_1 = (a_2 * a_2);
     float _e6 = weft_clamp_cos(n_dot_v);
     float _e7 = weft_clamp_cos(n_dot_l);
     float lv = (_e7 * sqrt((((_e6 * _e6) * (1.0 - a2_1)) + a2_1)));
@@ -244,9 +245,9 @@ EyeLookup eye_refracted(vec3 p, vec3 v_1, EyeCornea c_1, float ior_1) {
     bool local_1 = false;
     vec3 centre = vec3(0.0, 0.0, c_1.centre_z);
     vec3 o = (p - centre);
-    float b_1 = dot(o, v_1);
-    float disc = ((b_1 * b_1) - (dot(o, o) - (c_1.radius * c_1.radius)));
-    float s_1 = (-(b_1) + sqrt(max(disc, 0.0)));
+    float b = dot(o, v_1);
+    float disc = ((b * b) - (dot(o, o) - (c_1.radius * c_1.radius)));
+    float s_1 = (-(b) + sqrt(max(disc, 0.0)));
     vec3 hit = (p + (s_1 * v_1));
     if (!((p.z <= 0.0))) {
         local = (disc <= 0.0);

@@ -122,9 +122,10 @@ float weft_f_dielectric(
     float g = metal::sqrt(metal::max(g2_, 0.0));
     float gmc = g - c_3;
     float gpc = metal::max(g + c_3, 0.0000001);
-    float a_2 = gmc / gpc;
-    float b = ((c_3 * gpc) - 1.0) / metal::max((c_3 * gmc) + 1.0, 0.0000001);
-    float f = metal::saturate(((0.5 * a_2) * a_2) * (1.0 + (b * b)));
+    float b_den = metal::max((c_3 * gmc) + 1.0, 0.0000001);
+    float b_num = (c_3 * gpc) - 1.0;
+    float inv = 1.0 / (gpc * b_den);
+    float f = metal::saturate((((0.5 * gmc) * gmc) * ((b_den * b_den) + (b_num * b_num))) * (inv * inv));
     return (g2_ < 0.0) ? 1.0 : f;
 }
 
@@ -141,8 +142,8 @@ float weft_v_smith_ggx_correlated(
     float roughness_2
 ) {
     float _e3 = weft_clamp_roughness(roughness_2);
-    float a_3 = _e3 * _e3;
-    float a2_1 = a_3 * a_3;
+    float a_2 = _e3 * _e3;
+    float a2_1 = a_2 * a_2;
     float _e6 = weft_clamp_cos(n_dot_v);
     float _e7 = weft_clamp_cos(n_dot_l);
     float lv = _e7 * metal::sqrt(((_e6 * _e6) * (1.0 - a2_1)) + a2_1);
@@ -308,9 +309,9 @@ EyeLookup eye_refracted(
     bool local_1 = {};
     metal::float3 centre = metal::float3(0.0, 0.0, c_1.centre_z);
     metal::float3 o = p - centre;
-    float b_1 = metal::dot(o, v_1);
-    float disc = (b_1 * b_1) - (metal::dot(o, o) - (c_1.radius * c_1.radius));
-    float s_1 = -(b_1) + metal::sqrt(metal::max(disc, 0.0));
+    float b = metal::dot(o, v_1);
+    float disc = (b * b) - (metal::dot(o, o) - (c_1.radius * c_1.radius));
+    float s_1 = -(b) + metal::sqrt(metal::max(disc, 0.0));
     metal::float3 hit = p + (s_1 * v_1);
     if (!((p.z <= 0.0))) {
         local = disc <= 0.0;

@@ -120,9 +120,10 @@ fn weft_f_dielectric(cos_i: f32, eta: f32) -> f32 {
     let g = sqrt(max(g2_, 0f));
     let gmc = (g - c_3);
     let gpc = max((g + c_3), 0.0000001f);
-    let a_2 = (gmc / gpc);
-    let b = (((c_3 * gpc) - 1f) / max(((c_3 * gmc) + 1f), 0.0000001f));
-    let f = saturate((((0.5f * a_2) * a_2) * (1f + (b * b))));
+    let b_den = max(((c_3 * gmc) + 1f), 0.0000001f);
+    let b_num = ((c_3 * gpc) - 1f);
+    let inv = (1f / (gpc * b_den));
+    let f = saturate(((((0.5f * gmc) * gmc) * ((b_den * b_den) + (b_num * b_num))) * (inv * inv)));
     return select(f, 1f, (g2_ < 0f));
 }
 
@@ -133,8 +134,8 @@ fn weft_f0_from_ior(ior: f32) -> f32 {
 
 fn weft_v_smith_ggx_correlated(n_dot_v: f32, n_dot_l: f32, roughness_2: f32) -> f32 {
     let _e3 = weft_clamp_roughness(roughness_2);
-    let a_3 = (_e3 * _e3);
-    let a2_1 = (a_3 * a_3);
+    let a_2 = (_e3 * _e3);
+    let a2_1 = (a_2 * a_2);
     let _e6 = weft_clamp_cos(n_dot_v);
     let _e7 = weft_clamp_cos(n_dot_l);
     let lv = (_e7 * sqrt((((_e6 * _e6) * (1f - a2_1)) + a2_1)));
@@ -255,9 +256,9 @@ fn eye_refracted(p: vec3<f32>, v_1: vec3<f32>, c_1: EyeCornea, ior_1: f32) -> Ey
 
     let centre = vec3<f32>(0f, 0f, c_1.centre_z);
     let o = (p - centre);
-    let b_1 = dot(o, v_1);
-    let disc = ((b_1 * b_1) - (dot(o, o) - (c_1.radius * c_1.radius)));
-    let s_1 = (-(b_1) + sqrt(max(disc, 0f)));
+    let b = dot(o, v_1);
+    let disc = ((b * b) - (dot(o, o) - (c_1.radius * c_1.radius)));
+    let s_1 = (-(b) + sqrt(max(disc, 0f)));
     let hit = (p + (s_1 * v_1));
     if !((p.z <= 0f)) {
         local = (disc <= 0f);

@@ -148,9 +148,10 @@ float weft_f_dielectric(float cos_i, float eta)
     float g = sqrt(max(g2_, 0.0));
     float gmc = (g - c_2);
     float gpc = max((g + c_2), 1e-7);
-    float a_1 = (gmc / gpc);
-    float b = (((c_2 * gpc) - 1.0) / max(((c_2 * gmc) + 1.0), 1e-7));
-    float f = saturate((((0.5 * a_1) * a_1) * (1.0 + (b * b))));
+    float b_den = max(((c_2 * gmc) + 1.0), 1e-7);
+    float b_num = ((c_2 * gpc) - 1.0);
+    float inv = (1.0 / (gpc * b_den));
+    float f = saturate(((((0.5 * gmc) * gmc) * ((b_den * b_den) + (b_num * b_num))) * (inv * inv)));
     return ((g2_ < 0.0) ? 1.0 : f);
 }
 
@@ -163,8 +164,8 @@ float weft_f0_from_ior(float ior)
 float weft_v_smith_ggx_correlated(float n_dot_v, float n_dot_l, float roughness_2)
 {
     const float _e3 = weft_clamp_roughness(roughness_2);
-    float a_2 = (_e3 * _e3);
-    float a2_1 = (a_2 * a_2);
+    float a_1 = (_e3 * _e3);
+    float a2_1 = (a_1 * a_1);
     const float _e6 = weft_clamp_cos(n_dot_v);
     const float _e7 = weft_clamp_cos(n_dot_l);
     float lv = (_e7 * sqrt((((_e6 * _e6) * (1.0 - a2_1)) + a2_1)));
@@ -324,9 +325,9 @@ EyeLookup eye_refracted(float3 p, float3 v_1, EyeCornea c_1, float ior_1)
 
     float3 centre = float3(0.0, 0.0, c_1.centre_z);
     float3 o = (p - centre);
-    float b_1 = dot(o, v_1);
-    float disc = ((b_1 * b_1) - (dot(o, o) - (c_1.radius * c_1.radius)));
-    float s_1 = (-(b_1) + sqrt(max(disc, 0.0)));
+    float b = dot(o, v_1);
+    float disc = ((b * b) - (dot(o, o) - (c_1.radius * c_1.radius)));
+    float s_1 = (-(b) + sqrt(max(disc, 0.0)));
     float3 hit = (p + (s_1 * v_1));
     if (!((p.z <= 0.0))) {
         local = (disc <= 0.0);

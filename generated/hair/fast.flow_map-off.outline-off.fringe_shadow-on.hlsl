@@ -103,9 +103,9 @@ struct WeftHair {
     int _pad10_0;
     float4 trt;
     float trt4_;
+    float inv_eta;
     int _end_pad_0;
     int _end_pad_1;
-    int _end_pad_2;
 };
 
 struct WeftHairLobes {
@@ -137,6 +137,7 @@ struct HairVaryings {
     nointerpolation float4 mp_norm : LOC7;
     nointerpolation float4 inv_v : LOC8;
     nointerpolation float4 trt : LOC9;
+    nointerpolation float4 jitter : LOC10;
 };
 
 static const float WEFT_PI = 3.1415927;
@@ -179,6 +180,7 @@ struct VertexOutput_vs_hair {
     nointerpolation float4 mp_norm : LOC7;
     nointerpolation float4 inv_v : LOC8;
     nointerpolation float4 trt : LOC9;
+    nointerpolation float4 jitter : LOC10;
     float4 clip_position_1 : SV_Position;
 };
 
@@ -193,6 +195,7 @@ struct FragmentInput_fs_main {
     nointerpolation float4 mp_norm_1 : LOC7;
     nointerpolation float4 inv_v_1 : LOC8;
     nointerpolation float4 trt_1 : LOC9;
+    nointerpolation float4 jitter_1 : LOC10;
     float4 clip_position_2 : SV_Position;
 };
 
@@ -217,9 +220,10 @@ float weft_f_dielectric(float cos_i, float eta)
     float g = sqrt(max(g2_, 0.0));
     float gmc = (g - c_1);
     float gpc = max((g + c_1), 1e-7);
-    float a_3 = (gmc / gpc);
-    float b_1 = (((c_1 * gpc) - 1.0) / max(((c_1 * gmc) + 1.0), 1e-7));
-    float f = saturate((((0.5 * a_3) * a_3) * (1.0 + (b_1 * b_1))));
+    float b_den = max(((c_1 * gmc) + 1.0), 1e-7);
+    float b_num = ((c_1 * gpc) - 1.0);
+    float inv = (1.0 / (gpc * b_den));
+    float f = saturate(((((0.5 * gmc) * gmc) * ((b_den * b_den) + (b_num * b_num))) * (inv * inv)));
     return ((g2_ < 0.0) ? 1.0 : f);
 }
 
@@ -317,8 +321,8 @@ float3x3 weft_tangent_frame(float3 n_2, float4 tangent)
     const float3 _e13 = weft_any_perpendicular(n_2);
     float3 t_2 = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_3 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_2 = (cross(n_2, t_2) * s_3);
-    return float3x3(t_2, b_2, n_2);
+    float3 b_1 = (cross(n_2, t_2) * s_3);
+    return float3x3(t_2, b_1, n_2);
 }
 
 float2 weft_transform_uv(float2 uv, float4 st)
@@ -338,21 +342,21 @@ float weft_hair_safe_sqrt(float x_1)
 
 float weft_hair_variance(float beta_m)
 {
-    float b_3 = clamp(beta_m, WEFT_HAIR_MIN_BETA_M, 1.0);
-    float b2_ = (b_3 * b_3);
+    float b_2 = clamp(beta_m, WEFT_HAIR_MIN_BETA_M, 1.0);
+    float b2_ = (b_2 * b_2);
     float b4_ = (b2_ * b2_);
     float b20_ = ((((b4_ * b4_) * b4_) * b4_) * b4_);
-    const float _e18 = weft_hair_sqr((((0.726 * b_3) + (0.812 * b2_)) + (3.7 * b20_)));
+    const float _e18 = weft_hair_sqr((((0.726 * b_2) + (0.812 * b2_)) + (3.7 * b20_)));
     return _e18;
 }
 
 float weft_hair_logistic_scale(float beta_n)
 {
-    float b_4 = clamp(beta_n, WEFT_HAIR_MIN_BETA_N, 1.0);
-    float b2_1 = (b_4 * b_4);
+    float b_3 = clamp(beta_n, WEFT_HAIR_MIN_BETA_N, 1.0);
+    float b2_1 = (b_3 * b_3);
     float b4_1 = (b2_1 * b2_1);
     float b22_ = (((((b4_1 * b4_1) * b4_1) * b4_1) * b4_1) * b2_1);
-    return (0.62665707 * (((0.265 * b_4) + (1.194 * b2_1)) + (5.372 * b22_)));
+    return (0.62665707 * (((0.265 * b_3) + (1.194 * b2_1)) + (5.372 * b22_)));
 }
 
 float3 weft_hair_sigma_a_scaled(float3 c, float scale_1)
@@ -363,8 +367,8 @@ float3 weft_hair_sigma_a_scaled(float3 c, float scale_1)
 
 float weft_hair_sigma_a_scale(float beta_n_1)
 {
-    float b_5 = clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1.0);
-    float d = (((((5.969 - (0.215 * b_5)) + ((2.532 * b_5) * b_5)) - (10.73 * pow(b_5, 3.0))) + (5.574 * pow(b_5, 4.0))) + (0.245 * pow(b_5, 5.0)));
+    float b_4 = clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1.0);
+    float d = (((((5.969 - (0.215 * b_4)) + ((2.532 * b_4) * b_4)) - (10.73 * pow(b_4, 3.0))) + (5.574 * pow(b_4, 4.0))) + (0.245 * pow(b_4, 5.0)));
     return (1.0 / d);
 }
 
@@ -378,8 +382,8 @@ WeftHair weft_hair_params(float3 sigma_a, float eta_1, float beta_m_1, float bet
     hair.v = float4(_e13, (0.25 * _e13), (4.0 * _e13), (4.0 * _e13));
     const float _e23 = weft_hair_logistic_scale(beta_n_2);
     hair.s = _e23;
-    float a_4 = radians(alpha_deg);
-    float s0_ = sin(a_4);
+    float a_3 = radians(alpha_deg);
+    float s0_ = sin(a_3);
     const float _e29 = weft_hair_safe_sqrt((1.0 - (s0_ * s0_)));
     float s1_ = ((2.0 * _e29) * s0_);
     float c1_ = ((_e29 * _e29) - (s0_ * s0_));
@@ -403,8 +407,10 @@ WeftHair weft_hair_params(float3 sigma_a, float eta_1, float beta_m_1, float bet
     float sh_1 = hair.s;
     hair.trt = float4((-9.2609 + (sh_1 * (65.993 - (107.38 * sh_1)))), (72.357 + (sh_1 * (-624.68 + (1069.8 * sh_1)))), (-153.75 + (sh_1 * (1704.7 - (3127.5 * sh_1)))), (-67.745 + (sh_1 * (-1105.8 + (2706.6 * sh_1)))));
     hair.trt4_ = (239.74 - (430.94 * sh_1));
-    WeftHair _e122 = hair;
-    const WeftHair wefthair = _e122;
+    float _e124 = hair.eta;
+    hair.inv_eta = (1.0 / _e124);
+    WeftHair _e127 = hair;
+    const WeftHair wefthair = _e127;
     return wefthair;
 }
 
@@ -481,29 +487,28 @@ WeftHairLobes weft_hair_fast(WeftHair hair_1, float3 t_1, float3 o_1, float3 i_1
     float3 u = ((1.0).xxx / ((1.0).xxx + (0.7 * x_6)));
     float3 bessel = (((1.0).xxx + ((u * ((1.0).xxx - u)) * ((0.181903).xxx + (u * ((-0.401835).xxx + (u * 3.1851)))))) * rsqrt(((1.0).xxx + (6.2831855 * x_6))));
     float3 mp = ((exp(min(((((_e19 * co) - (sin_i_1 * so)) - (1.0).xxx) * inv_v_2), (0.0).xxx)) * bessel) * norm);
-    float sin_t = (sin_o_1 / hair_1.eta);
-    const float _e148 = weft_hair_safe_sqrt((1.0 - (sin_t * sin_t)));
-    float chord_1 = (2.0 / max(_e148, 0.0001));
-    float a_5 = (_e15 * rsqrt(max(((hair_1.eta * hair_1.eta) - (sin_o_1 * sin_o_1)), 1e-8)));
+    float sin_t = (sin_o_1 * hair_1.inv_eta);
+    float chord_1 = (2.0 * rsqrt(max((1.0 - (sin_t * sin_t)), 1e-8)));
+    float a_4 = (_e15 * rsqrt(max(((hair_1.eta * hair_1.eta) - (sin_o_1 * sin_o_1)), 1e-8)));
     float sd = hair_1.blur.x;
     float cd = hair_1.blur.y;
     float c_r = sqrt(min(((0.5 + (0.5 * cos_phi_1)) + hair_1.r_floor), 1.0));
     const float _e179 = weft_f_dielectric((_e15 * c_r), hair_1.eta);
     float r = ((0.25 * c_r) * _e179);
-    const float3 _e189 = weft_hair_fast_tt(((sin_half_1 * cd) + (cos_half * sd)), ((sin_half_1 * cd) - (cos_half * sd)), a_5, _e15, hair_1.eta, hair_1.sigma_a, chord_1);
+    const float3 _e189 = weft_hair_fast_tt(((sin_half_1 * cd) + (cos_half * sd)), ((sin_half_1 * cd) - (cos_half * sd)), a_4, _e15, hair_1.eta, hair_1.sigma_a, chord_1);
     float h_f = (0.6243 + (0.1898 * _e15));
     const float _e197 = weft_hair_safe_sqrt((1.0 - (h_f * h_f)));
     const float _e200 = weft_f_dielectric((_e15 * _e197), hair_1.eta);
     float h2_ = (0.4824 + (0.2778 * _e15));
     const float _e208 = weft_hair_safe_sqrt((1.0 - (h2_ * h2_)));
     const float _e211 = weft_f_dielectric((_e15 * _e208), hair_1.eta);
-    const float _e219 = weft_hair_safe_sqrt((1.0 - (((h2_ * h2_) * a_5) * a_5)));
+    const float _e219 = weft_hair_safe_sqrt((1.0 - (((h2_ * h2_) * a_4) * a_4)));
     float3 t2_ = exp((-(hair_1.sigma_a) * (chord_1 * _e219)));
     const float _e225 = weft_hair_sqr((1.0 - _e211));
     float3 a2_ = (((_e225 * _e211) * t2_) * t2_);
     float3 ft = (_e200 * t2_);
     float3 a3_ = ((a2_ * ft) / ((1.0).xxx - ft));
-    float s2_fit = (hair_1.trt.x + (a_5 * (hair_1.trt.y + (a_5 * (hair_1.trt.z + (a_5 * (hair_1.trt.w + (a_5 * hair_1.trt4_))))))));
+    float s2_fit = (hair_1.trt.x + (a_4 * (hair_1.trt.y + (a_4 * (hair_1.trt.z + (a_4 * (hair_1.trt.w + (a_4 * hair_1.trt4_))))))));
     float s_trt = sqrt(max(exp(clamp(s2_fit, -9.0, 2.5)), (hair_1.s * hair_1.s)));
     const float _e262 = weft_hair_trimmed_logistic(acos(cos_phi_1), s_trt);
     out_3.s = ((((mp.x * r)).xxx + (mp.y * _e189)) + (mp.z * ((a2_ * _e262) + (a3_ * 0.15915494))));
@@ -515,7 +520,12 @@ WeftHairLobes weft_hair_fast(WeftHair hair_1, float3 t_1, float3 o_1, float3 i_1
     return wefthairlobes;
 }
 
-WeftHair ConstructWeftHair(float3 arg0, float arg1, float4 arg2, float arg3, float3 arg4, float3 arg5, float3 arg6, float3 arg7, float2 arg8, float arg9, float4 arg10, float arg11) {
+float hair_noise_period(float density)
+{
+    return max(round(density), 1.0);
+}
+
+WeftHair ConstructWeftHair(float3 arg0, float arg1, float4 arg2, float arg3, float3 arg4, float3 arg5, float3 arg6, float3 arg7, float2 arg8, float arg9, float4 arg10, float arg11, float arg12) {
     WeftHair ret = (WeftHair)0;
     ret.sigma_a = arg0;
     ret.eta = arg1;
@@ -529,13 +539,14 @@ WeftHair ConstructWeftHair(float3 arg0, float arg1, float4 arg2, float arg3, flo
     ret.r_floor = arg9;
     ret.trt = arg10;
     ret.trt4_ = arg11;
+    ret.inv_eta = arg12;
     return ret;
 }
 
 WeftHair hair_from_varyings(HairVaryings in_4, float3 sigma_a_2)
 {
     float v_1 = in_4.fibre.z;
-    const WeftHair wefthair_1 = ConstructWeftHair(max(sigma_a_2, (0.0).xxx), in_4.fibre.x, float4(v_1, (0.25 * v_1), (4.0 * v_1), (4.0 * v_1)), in_4.fibre.y, in_4.sin2k.xyz, in_4.cos2k.xyz, in_4.inv_v.xyz, in_4.mp_norm.xyz, float2(in_4.cos2k.w, in_4.mp_norm.w), in_4.sin2k.w, float4(in_4.inv_v.w, in_4.trt.xyz), in_4.trt.w);
+    const WeftHair wefthair_1 = ConstructWeftHair(max(sigma_a_2, (0.0).xxx), in_4.fibre.x, float4(v_1, (0.25 * v_1), (4.0 * v_1), (4.0 * v_1)), in_4.fibre.y, in_4.sin2k.xyz, in_4.cos2k.xyz, in_4.inv_v.xyz, in_4.mp_norm.xyz, float2(in_4.cos2k.w, in_4.mp_norm.w), in_4.sin2k.w, float4(in_4.inv_v.w, in_4.trt.xyz), in_4.trt.w, in_4.jitter.z);
     return wefthair_1;
 }
 
@@ -562,39 +573,35 @@ uint naga_f2u32(float value) {
     return uint(clamp(value, 0.0, 4294967000.0));
 }
 
-float hair_value_noise(float x_5, float period)
+float hair_value_noise(float x_5, float p)
 {
-    float p = max(round(period), 1.0);
     float cell = floor(x_5);
     float f_1 = (x_5 - cell);
     float c0_ = (cell - (p * floor((cell / p))));
     float c1_1 = (((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0));
-    const float _e19 = hair_hash(naga_f2u32(c0_));
-    const float _e21 = hair_hash(naga_f2u32(c1_1));
-    return (lerp(_e19, _e21, ((f_1 * f_1) * (3.0 - (2.0 * f_1)))) - 0.5);
+    const float _e16 = hair_hash(naga_f2u32(c0_));
+    const float _e18 = hair_hash(naga_f2u32(c1_1));
+    return (lerp(_e16, _e18, ((f_1 * f_1) * (3.0 - (2.0 * f_1)))) - 0.5);
 }
 
-float hair_jitter(float2 uv0_1)
+float hair_jitter(float2 uv0_1, float4 per_vertex)
 {
-    float4 _e3 = uv_rotate_mask.Sample(material_sampler, uv0_1);
-    float mask = step(0.8, _e3.x);
-    float _e9 = material.anisotropic_direction;
-    float a_6 = radians(_e9);
-    float c_2 = cos(a_6);
-    float s_4 = sin(a_6);
+    float4 _e4 = uv_rotate_mask.Sample(material_sampler, uv0_1);
+    float mask = step(0.8, _e4.x);
+    float c_2 = per_vertex.x;
+    float s_4 = per_vertex.y;
     float2 rotated = float2(((c_2 * uv0_1.x) + (s_4 * uv0_1.y)), ((-(s_4) * uv0_1.x) + (c_2 * uv0_1.y)));
-    float4 _e30 = material.jitter_map_st;
-    const float2 _e31 = weft_transform_uv(((mask > 0.5) ? rotated : uv0_1), _e30);
-    float4 _e34 = jitter_map.Sample(material_sampler, _e31);
-    float j = _e34.x;
-    uint _e40 = material.strand_along_tangent;
-    float across = ((_e40 != 0u) ? _e31.y : _e31.x);
-    float _e46 = material.jitter_strength;
-    float _e50 = material.strand_noise;
-    float _e53 = material.strand_density;
-    float _e57 = material.strand_density;
-    const float _e58 = hair_value_noise((across * _e53), _e57);
-    return ((_e46 * j) + (_e50 * _e58));
+    float4 _e27 = material.jitter_map_st;
+    const float2 _e28 = weft_transform_uv(((mask > 0.5) ? rotated : uv0_1), _e27);
+    float4 _e31 = jitter_map.Sample(material_sampler, _e28);
+    float j = _e31.x;
+    uint _e37 = material.strand_along_tangent;
+    float across = ((_e37 != 0u) ? _e28.y : _e28.x);
+    float _e43 = material.jitter_strength;
+    float _e47 = material.strand_noise;
+    float _e50 = material.strand_density;
+    const float _e53 = hair_value_noise((across * _e50), per_vertex.w);
+    return ((_e43 * j) + (_e47 * _e53));
 }
 
 VertexOutput_vs_fringe_shadow vs_fringe_shadow(WeftFringeShadowVertex in_)
@@ -634,7 +641,7 @@ float4 fs_fringe_shadow() : SV_Target0
     return float4(max(_e2.xyz, (0.0).xxx), 1.0);
 }
 
-HairVaryings ConstructHairVaryings(float4 arg0, float3 arg1, float3 arg2, float4 arg3, float2 arg4, float4 arg5, float4 arg6, float4 arg7, float4 arg8, float4 arg9, float4 arg10) {
+HairVaryings ConstructHairVaryings(float4 arg0, float3 arg1, float3 arg2, float4 arg3, float2 arg4, float4 arg5, float4 arg6, float4 arg7, float4 arg8, float4 arg9, float4 arg10, float4 arg11) {
     HairVaryings ret = (HairVaryings)0;
     ret.clip_position = arg0;
     ret.world_position = arg1;
@@ -647,6 +654,7 @@ HairVaryings ConstructHairVaryings(float4 arg0, float3 arg1, float3 arg2, float4
     ret.mp_norm = arg8;
     ret.inv_v = arg9;
     ret.trt = arg10;
+    ret.jitter = arg11;
     return ret;
 }
 
@@ -667,28 +675,33 @@ VertexOutput_vs_hair vs_hair(WeftVertexInput in_1)
         const float _e23 = weft_hair_sigma_a_scale(_e22);
         scale = _e23;
     }
-    float _e30 = h.eta;
-    float _e32 = h.s;
-    float _e35 = h.v.x;
-    float _e36 = scale;
-    float3 _e39 = h.sin2k;
-    float _e41 = h.r_floor;
-    float3 _e44 = h.cos2k;
-    float _e47 = h.blur.x;
-    float3 _e50 = h.mp_norm;
-    float _e53 = h.blur.y;
-    float3 _e56 = h.inv_v;
-    float _e59 = h.trt.x;
-    float4 _e62 = h.trt;
-    float _e65 = h.trt4_;
-    const HairVaryings hairvaryings = ConstructHairVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, float4(_e30, _e32, _e35, _e36), float4(_e39, _e41), float4(_e44, _e47), float4(_e50, _e53), float4(_e56, _e59), float4(_e62.yzw, _e65));
-    const VertexOutput_vs_hair hairvaryings_1 = { hairvaryings.world_position, hairvaryings.world_normal, hairvaryings.world_tangent, hairvaryings.uv0_, hairvaryings.fibre, hairvaryings.sin2k, hairvaryings.cos2k, hairvaryings.mp_norm, hairvaryings.inv_v, hairvaryings.trt, hairvaryings.clip_position };
+    float _e26 = material.anisotropic_direction;
+    float a_5 = radians(_e26);
+    float _e34 = h.eta;
+    float _e36 = h.s;
+    float _e39 = h.v.x;
+    float _e40 = scale;
+    float3 _e43 = h.sin2k;
+    float _e45 = h.r_floor;
+    float3 _e48 = h.cos2k;
+    float _e51 = h.blur.x;
+    float3 _e54 = h.mp_norm;
+    float _e57 = h.blur.y;
+    float3 _e60 = h.inv_v;
+    float _e63 = h.trt.x;
+    float4 _e66 = h.trt;
+    float _e69 = h.trt4_;
+    float _e74 = h.inv_eta;
+    float _e77 = material.strand_density;
+    const float _e78 = hair_noise_period(_e77);
+    const HairVaryings hairvaryings = ConstructHairVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, float4(_e34, _e36, _e39, _e40), float4(_e43, _e45), float4(_e48, _e51), float4(_e54, _e57), float4(_e60, _e63), float4(_e66.yzw, _e69), float4(cos(a_5), sin(a_5), _e74, _e78));
+    const VertexOutput_vs_hair hairvaryings_1 = { hairvaryings.world_position, hairvaryings.world_normal, hairvaryings.world_tangent, hairvaryings.uv0_, hairvaryings.fibre, hairvaryings.sin2k, hairvaryings.cos2k, hairvaryings.mp_norm, hairvaryings.inv_v, hairvaryings.trt, hairvaryings.jitter, hairvaryings.clip_position };
     return hairvaryings_1;
 }
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    HairVaryings in_2 = { fragmentinput_fs_main.clip_position_2, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_3, fragmentinput_fs_main.fibre_1, fragmentinput_fs_main.sin2k_1, fragmentinput_fs_main.cos2k_1, fragmentinput_fs_main.mp_norm_1, fragmentinput_fs_main.inv_v_1, fragmentinput_fs_main.trt_1 };
+    HairVaryings in_2 = { fragmentinput_fs_main.clip_position_2, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_3, fragmentinput_fs_main.fibre_1, fragmentinput_fs_main.sin2k_1, fragmentinput_fs_main.cos2k_1, fragmentinput_fs_main.mp_norm_1, fragmentinput_fs_main.inv_v_1, fragmentinput_fs_main.trt_1, fragmentinput_fs_main.jitter_1 };
     float3 color = (float3)0;
     WeftHairLobes lobes = (WeftHairLobes)0;
 
@@ -704,29 +717,29 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 n_3 = _e19.n;
     const float3x3 _e23 = weft_tangent_frame(n_3, in_2.world_tangent);
     const float3 _e25 = hair_strand(_e23, in_2.uv0_);
-    const float _e27 = hair_jitter(in_2.uv0_);
-    const float3 _e28 = weft_main_light_direction();
-    const float3 _e29 = weft_main_light_radiance();
-    const float3 _e30 = weft_sh_irradiance(n_3);
-    float n_dot_l = dot(n_3, _e28);
+    const float _e28 = hair_jitter(in_2.uv0_, in_2.jitter);
+    const float3 _e29 = weft_main_light_direction();
+    const float3 _e30 = weft_main_light_radiance();
+    const float3 _e31 = weft_sh_irradiance(n_3);
+    float n_dot_l = dot(n_3, _e29);
     {
-        const float3 _e35 = weft_safe_normalize((_e25 + (_e27 * n_3)), _e25);
-        const float3 _e38 = weft_hair_sigma_a_scaled(base, in_2.fibre.w);
-        const WeftHair _e39 = hair_from_varyings(in_2, _e38);
-        const WeftHairAngles _e40 = weft_hair_angles(_e35, v_2, _e28);
+        const float3 _e36 = weft_safe_normalize((_e25 + (_e28 * n_3)), _e25);
+        const float3 _e39 = weft_hair_sigma_a_scaled(base, in_2.fibre.w);
+        const WeftHair _e40 = hair_from_varyings(in_2, _e39);
+        const WeftHairAngles _e41 = weft_hair_angles(_e36, v_2, _e29);
         {
-            const WeftHairLobes _e42 = weft_hair_fast(_e39, _e35, v_2, _e28);
-            lobes = _e42;
+            const WeftHairLobes _e43 = weft_hair_fast(_e40, _e36, v_2, _e29);
+            lobes = _e43;
         }
         float body = smoothstep(-0.25, HAIR_TERMINATOR, n_dot_l);
-        float3 _e49 = lobes.back;
-        float3 multiple = (base * ((1.0).xxx - _e49));
-        float3 _e53 = lobes.s;
-        float3 direct = ((_e53 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
-        float3 _e62 = lobes.back;
-        color = ((direct * _e29) + (_e30 * (multiple + _e62)));
+        float3 _e50 = lobes.back;
+        float3 multiple = (base * ((1.0).xxx - _e50));
+        float3 _e54 = lobes.s;
+        float3 direct = ((_e54 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
+        float3 _e63 = lobes.back;
+        color = ((direct * _e30) + (_e31 * (multiple + _e63)));
     }
-    float3 _e66 = color;
-    float3 radiance = clamp(_e66, (0.0).xxx, (65504.0).xxx);
+    float3 _e67 = color;
+    float3 radiance = clamp(_e67, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

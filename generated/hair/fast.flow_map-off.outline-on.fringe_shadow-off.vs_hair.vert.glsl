@@ -77,6 +77,7 @@ struct WeftHair {
     float r_floor;
     vec4 trt;
     float trt4_;
+    float inv_eta;
 };
 struct WeftHairLobes {
     vec3 s;
@@ -99,6 +100,7 @@ struct HairVaryings {
     vec4 mp_norm;
     vec4 inv_v;
     vec4 trt;
+    vec4 jitter;
 };
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
@@ -134,6 +136,7 @@ layout(location = 6) flat out vec4 _vs2fs_location6;
 layout(location = 7) flat out vec4 _vs2fs_location7;
 layout(location = 8) flat out vec4 _vs2fs_location8;
 layout(location = 9) flat out vec4 _vs2fs_location9;
+layout(location = 10) flat out vec4 _vs2fs_location10;
 
 vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
     float len2_ = dot(v, v);
@@ -153,9 +156,10 @@ float weft_f_dielectric(float cos_i, float eta) {
     float g = sqrt(max(g2_, 0.0));
     float gmc = (g - c_1);
     float gpc = max((g + c_1), 1e-7);
-    float a_3 = (gmc / gpc);
-    float b_1 = (((c_1 * gpc) - 1.0) / max(((c_1 * gmc) + 1.0), 1e-7));
-    float f = clamp((((0.5 * a_3) * a_3) * (1.0 + (b_1 * b_1))), 0.0, 1.0);
+    float b_den = max(((c_1 * gmc) + 1.0), 1e-7);
+    float b_num = ((c_1 * gpc) - 1.0);
+    float inv = (1.0 / (gpc * b_den));
+    float f = clamp(((((0.5 * gmc) * gmc) * ((b_den * b_den) + (b_num * b_num))) * (inv * inv)), 0.0, 1.0);
     return ((g2_ < 0.0) ? 1.0 : f);
 }
 
@@ -235,8 +239,8 @@ mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
     vec3 _e13 = weft_any_perpendicular(n_2);
     vec3 t_2 = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_3 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_2 = (cross(n_2, t_2) * s_3);
-    return mat3x3(t_2, b_2, n_2);
+    vec3 b_1 = (cross(n_2, t_2) * s_3);
+    return mat3x3(t_2, b_1, n_2);
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
@@ -252,20 +256,20 @@ float weft_hair_safe_sqrt(float x_1) {
 }
 
 float weft_hair_variance(float beta_m) {
-    float b_3 = clamp(beta_m, WEFT_HAIR_MIN_BETA_M, 1.0);
-    float b2_ = (b_3 * b_3);
+    float b_2 = clamp(beta_m, WEFT_HAIR_MIN_BETA_M, 1.0);
+    float b2_ = (b_2 * b_2);
     float b4_ = (b2_ * b2_);
     float b20_ = ((((b4_ * b4_) * b4_) * b4_) * b4_);
-    float _e18 = weft_hair_sqr((((0.726 * b_3) + (0.812 * b2_)) + (3.7 * b20_)));
+    float _e18 = weft_hair_sqr((((0.726 * b_2) + (0.812 * b2_)) + (3.7 * b20_)));
     return _e18;
 }
 
 float weft_hair_logistic_scale(float beta_n) {
-    float b_4 = clamp(beta_n, WEFT_HAIR_MIN_BETA_N, 1.0);
-    float b2_1 = (b_4 * b_4);
+    float b_3 = clamp(beta_n, WEFT_HAIR_MIN_BETA_N, 1.0);
+    float b2_1 = (b_3 * b_3);
     float b4_1 = (b2_1 * b2_1);
     float b22_ = (((((b4_1 * b4_1) * b4_1) * b4_1) * b4_1) * b2_1);
-    return (0.62665707 * (((0.265 * b_4) + (1.194 * b2_1)) + (5.372 * b22_)));
+    return (0.62665707 * (((0.265 * b_3) + (1.194 * b2_1)) + (5.372 * b22_)));
 }
 
 vec3 weft_hair_sigma_a_scaled(vec3 c, float scale_1) {
@@ -274,21 +278,21 @@ vec3 weft_hair_sigma_a_scaled(vec3 c, float scale_1) {
 }
 
 float weft_hair_sigma_a_scale(float beta_n_1) {
-    float b_5 = clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1.0);
-    float d = (((((5.969 - (0.215 * b_5)) + ((2.532 * b_5) * b_5)) - (10.73 * pow(b_5, 3.0))) + (5.574 * pow(b_5, 4.0))) + (0.245 * pow(b_5, 5.0)));
+    float b_4 = clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1.0);
+    float d = (((((5.969 - (0.215 * b_4)) + ((2.532 * b_4) * b_4)) - (10.73 * pow(b_4, 3.0))) + (5.574 * pow(b_4, 4.0))) + (0.245 * pow(b_4, 5.0)));
     return (1.0 / d);
 }
 
 WeftHair weft_hair_params(vec3 sigma_a, float eta_1, float beta_m_1, float beta_n_2, float alpha_deg) {
-    WeftHair hair = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0, vec4(0.0), 0.0);
+    WeftHair hair = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0, vec4(0.0), 0.0, 0.0);
     hair.sigma_a = max(sigma_a, vec3(0.0));
     hair.eta = max(eta_1, 1.0001);
     float _e13 = weft_hair_variance(beta_m_1);
     hair.v = vec4(_e13, (0.25 * _e13), (4.0 * _e13), (4.0 * _e13));
     float _e23 = weft_hair_logistic_scale(beta_n_2);
     hair.s = _e23;
-    float a_4 = radians(alpha_deg);
-    float s0_ = sin(a_4);
+    float a_3 = radians(alpha_deg);
+    float s0_ = sin(a_3);
     float _e29 = weft_hair_safe_sqrt((1.0 - (s0_ * s0_)));
     float s1_ = ((2.0 * _e29) * s0_);
     float c1_ = ((_e29 * _e29) - (s0_ * s0_));
@@ -312,8 +316,10 @@ WeftHair weft_hair_params(vec3 sigma_a, float eta_1, float beta_m_1, float beta_
     float sh_1 = hair.s;
     hair.trt = vec4((-9.2609 + (sh_1 * (65.993 - (107.38 * sh_1)))), (72.357 + (sh_1 * (-624.68 + (1069.8 * sh_1)))), (-153.75 + (sh_1 * (1704.7 - (3127.5 * sh_1)))), (-67.745 + (sh_1 * (-1105.8 + (2706.6 * sh_1)))));
     hair.trt4_ = (239.74 - (430.94 * sh_1));
-    WeftHair _e122 = hair;
-    return _e122;
+    float _e124 = hair.eta;
+    hair.inv_eta = (1.0 / _e124);
+    WeftHair _e127 = hair;
+    return _e127;
 }
 
 float weft_hair_logistic(float x_2, float s) {
@@ -380,29 +386,28 @@ WeftHairLobes weft_hair_fast(WeftHair hair_1, vec3 t_1, vec3 o_1, vec3 i_1) {
     vec3 u = (vec3(1.0) / (vec3(1.0) + (0.7 * x_6)));
     vec3 bessel = ((vec3(1.0) + ((u * (vec3(1.0) - u)) * (vec3(0.181903) + (u * (vec3(-0.401835) + (u * 3.1851)))))) * inversesqrt((vec3(1.0) + (6.2831855 * x_6))));
     vec3 mp = ((exp(min(((((_e19 * co) - (sin_i_1 * so)) - vec3(1.0)) * inv_v), vec3(0.0))) * bessel) * norm);
-    float sin_t = (sin_o_1 / hair_1.eta);
-    float _e148 = weft_hair_safe_sqrt((1.0 - (sin_t * sin_t)));
-    float chord_1 = (2.0 / max(_e148, 0.0001));
-    float a_5 = (_e15 * inversesqrt(max(((hair_1.eta * hair_1.eta) - (sin_o_1 * sin_o_1)), 1e-8)));
+    float sin_t = (sin_o_1 * hair_1.inv_eta);
+    float chord_1 = (2.0 * inversesqrt(max((1.0 - (sin_t * sin_t)), 1e-8)));
+    float a_4 = (_e15 * inversesqrt(max(((hair_1.eta * hair_1.eta) - (sin_o_1 * sin_o_1)), 1e-8)));
     float sd = hair_1.blur.x;
     float cd = hair_1.blur.y;
     float c_r = sqrt(min(((0.5 + (0.5 * cos_phi_1)) + hair_1.r_floor), 1.0));
     float _e179 = weft_f_dielectric((_e15 * c_r), hair_1.eta);
     float r = ((0.25 * c_r) * _e179);
-    vec3 _e189 = weft_hair_fast_tt(((sin_half_1 * cd) + (cos_half * sd)), ((sin_half_1 * cd) - (cos_half * sd)), a_5, _e15, hair_1.eta, hair_1.sigma_a, chord_1);
+    vec3 _e189 = weft_hair_fast_tt(((sin_half_1 * cd) + (cos_half * sd)), ((sin_half_1 * cd) - (cos_half * sd)), a_4, _e15, hair_1.eta, hair_1.sigma_a, chord_1);
     float h_f = (0.6243 + (0.1898 * _e15));
     float _e197 = weft_hair_safe_sqrt((1.0 - (h_f * h_f)));
     float _e200 = weft_f_dielectric((_e15 * _e197), hair_1.eta);
     float h2_ = (0.4824 + (0.2778 * _e15));
     float _e208 = weft_hair_safe_sqrt((1.0 - (h2_ * h2_)));
     float _e211 = weft_f_dielectric((_e15 * _e208), hair_1.eta);
-    float _e219 = weft_hair_safe_sqrt((1.0 - (((h2_ * h2_) * a_5) * a_5)));
+    float _e219 = weft_hair_safe_sqrt((1.0 - (((h2_ * h2_) * a_4) * a_4)));
     vec3 t2_ = exp((-(hair_1.sigma_a) * (chord_1 * _e219)));
     float _e225 = weft_hair_sqr((1.0 - _e211));
     vec3 a2_ = (((_e225 * _e211) * t2_) * t2_);
     vec3 ft = (_e200 * t2_);
     vec3 a3_ = ((a2_ * ft) / (vec3(1.0) - ft));
-    float s2_fit = (hair_1.trt.x + (a_5 * (hair_1.trt.y + (a_5 * (hair_1.trt.z + (a_5 * (hair_1.trt.w + (a_5 * hair_1.trt4_))))))));
+    float s2_fit = (hair_1.trt.x + (a_4 * (hair_1.trt.y + (a_4 * (hair_1.trt.z + (a_4 * (hair_1.trt.w + (a_4 * hair_1.trt4_))))))));
     float s_trt = sqrt(max(exp(clamp(s2_fit, -9.0, 2.5)), (hair_1.s * hair_1.s)));
     float _e262 = weft_hair_trimmed_logistic(acos(cos_phi_1), s_trt);
     out_3.s = ((vec3((mp.x * r)) + (mp.y * _e189)) + (mp.z * ((a2_ * _e262) + (a3_ * 0.15915494))));
@@ -413,9 +418,13 @@ WeftHairLobes weft_hair_fast(WeftHair hair_1, vec3 t_1, vec3 o_1, vec3 i_1) {
     return _e290;
 }
 
+float hair_noise_period(float density) {
+    return max(roundEven(density), 1.0);
+}
+
 WeftHair hair_from_varyings(HairVaryings in_4, vec3 sigma_a_2) {
     float v_1 = in_4.fibre.z;
-    return WeftHair(max(sigma_a_2, vec3(0.0)), in_4.fibre.x, vec4(v_1, (0.25 * v_1), (4.0 * v_1), (4.0 * v_1)), in_4.fibre.y, in_4.sin2k.xyz, in_4.cos2k.xyz, in_4.inv_v.xyz, in_4.mp_norm.xyz, vec2(in_4.cos2k.w, in_4.mp_norm.w), in_4.sin2k.w, vec4(in_4.inv_v.w, in_4.trt.xyz), in_4.trt.w);
+    return WeftHair(max(sigma_a_2, vec3(0.0)), in_4.fibre.x, vec4(v_1, (0.25 * v_1), (4.0 * v_1), (4.0 * v_1)), in_4.fibre.y, in_4.sin2k.xyz, in_4.cos2k.xyz, in_4.inv_v.xyz, in_4.mp_norm.xyz, vec2(in_4.cos2k.w, in_4.mp_norm.w), in_4.sin2k.w, vec4(in_4.inv_v.w, in_4.trt.xyz), in_4.trt.w, in_4.jitter.z);
 }
 
 vec3 hair_strand(mat3x3 frame, vec2 uv0_) {
@@ -434,20 +443,19 @@ float hair_hash(uint x_4) {
     return (float(((word >> 22u) ^ word)) * 2.3283064e-10);
 }
 
-float hair_value_noise(float x_5, float period) {
-    float p = max(roundEven(period), 1.0);
+float hair_value_noise(float x_5, float p) {
     float cell = floor(x_5);
     float f_1 = (x_5 - cell);
     float c0_ = (cell - (p * floor((cell / p))));
     float c1_1 = (((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0));
-    float _e19 = hair_hash(uint(c0_));
-    float _e21 = hair_hash(uint(c1_1));
-    return (mix(_e19, _e21, ((f_1 * f_1) * (3.0 - (2.0 * f_1)))) - 0.5);
+    float _e16 = hair_hash(uint(c0_));
+    float _e18 = hair_hash(uint(c1_1));
+    return (mix(_e16, _e18, ((f_1 * f_1) * (3.0 - (2.0 * f_1)))) - 0.5);
 }
 
 void main() {
     WeftVertexInput in_1 = WeftVertexInput(_p2vs_location0, _p2vs_location1, _p2vs_location2, _p2vs_location3);
-    WeftHair h = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0, vec4(0.0), 0.0);
+    WeftHair h = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0, vec4(0.0), 0.0, 0.0);
     float scale = 0.0;
     WeftVaryings _e1 = weft_forward_vertex(in_1);
     float _e6 = _group_1_binding_0_vs.ior;
@@ -461,21 +469,26 @@ void main() {
         float _e23 = weft_hair_sigma_a_scale(_e22);
         scale = _e23;
     }
-    float _e30 = h.eta;
-    float _e32 = h.s;
-    float _e35 = h.v.x;
-    float _e36 = scale;
-    vec3 _e39 = h.sin2k;
-    float _e41 = h.r_floor;
-    vec3 _e44 = h.cos2k;
-    float _e47 = h.blur.x;
-    vec3 _e50 = h.mp_norm;
-    float _e53 = h.blur.y;
-    vec3 _e56 = h.inv_v;
-    float _e59 = h.trt.x;
-    vec4 _e62 = h.trt;
-    float _e65 = h.trt4_;
-    HairVaryings _tmp_return = HairVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, vec4(_e30, _e32, _e35, _e36), vec4(_e39, _e41), vec4(_e44, _e47), vec4(_e50, _e53), vec4(_e56, _e59), vec4(_e62.yzw, _e65));
+    float _e26 = _group_1_binding_0_vs.anisotropic_direction;
+    float a_5 = radians(_e26);
+    float _e34 = h.eta;
+    float _e36 = h.s;
+    float _e39 = h.v.x;
+    float _e40 = scale;
+    vec3 _e43 = h.sin2k;
+    float _e45 = h.r_floor;
+    vec3 _e48 = h.cos2k;
+    float _e51 = h.blur.x;
+    vec3 _e54 = h.mp_norm;
+    float _e57 = h.blur.y;
+    vec3 _e60 = h.inv_v;
+    float _e63 = h.trt.x;
+    vec4 _e66 = h.trt;
+    float _e69 = h.trt4_;
+    float _e74 = h.inv_eta;
+    float _e77 = _group_1_binding_0_vs.strand_density;
+    float _e78 = hair_noise_period(_e77);
+    HairVaryings _tmp_return = HairVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, vec4(_e34, _e36, _e39, _e40), vec4(_e43, _e45), vec4(_e48, _e51), vec4(_e54, _e57), vec4(_e60, _e63), vec4(_e66.yzw, _e69), vec4(cos(a_5), sin(a_5), _e74, _e78));
     gl_Position = _tmp_return.clip_position;
     _vs2fs_location0 = _tmp_return.world_position;
     _vs2fs_location1 = _tmp_return.world_normal;
@@ -487,6 +500,7 @@ void main() {
     _vs2fs_location7 = _tmp_return.mp_norm;
     _vs2fs_location8 = _tmp_return.inv_v;
     _vs2fs_location9 = _tmp_return.trt;
+    _vs2fs_location10 = _tmp_return.jitter;
     gl_Position.yz = vec2(-gl_Position.y, gl_Position.z * 2.0 - gl_Position.w);
     return;
 }

@@ -83,6 +83,7 @@ struct WeftHair {
     float r_floor;
     vec4 trt;
     float trt4_;
+    float inv_eta;
 };
 struct WeftHairLobes {
     vec3 s;
@@ -105,6 +106,7 @@ struct HairVaryings {
     vec4 mp_norm;
     vec4 inv_v;
     vec4 trt;
+    vec4 jitter;
 };
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
@@ -142,9 +144,10 @@ float weft_f_dielectric(float cos_i, float eta) {
     float g = sqrt(max(g2_, 0.0));
     float gmc = (g - c_1);
     float gpc = max((g + c_1), 1e-7);
-    float a_3 = (gmc / gpc);
-    float b_1 = (((c_1 * gpc) - 1.0) / max(((c_1 * gmc) + 1.0), 1e-7));
-    float f = clamp((((0.5 * a_3) * a_3) * (1.0 + (b_1 * b_1))), 0.0, 1.0);
+    float b_den = max(((c_1 * gmc) + 1.0), 1e-7);
+    float b_num = ((c_1 * gpc) - 1.0);
+    float inv = (1.0 / (gpc * b_den));
+    float f = clamp(((((0.5 * gmc) * gmc) * ((b_den * b_den) + (b_num * b_num))) * (inv * inv)), 0.0, 1.0);
     return ((g2_ < 0.0) ? 1.0 : f);
 }
 
@@ -156,8 +159,8 @@ mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
     vec3 _e13 = weft_any_perpendicular(n_2);
     vec3 t_2 = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_3 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_2 = (cross(n_2, t_2) * s_3);
-    return mat3x3(t_2, b_2, n_2);
+    vec3 b_1 = (cross(n_2, t_2) * s_3);
+    return mat3x3(t_2, b_1, n_2);
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
@@ -173,20 +176,20 @@ float weft_hair_safe_sqrt(float x_1) {
 }
 
 float weft_hair_variance(float beta_m) {
-    float b_3 = clamp(beta_m, WEFT_HAIR_MIN_BETA_M, 1.0);
-    float b2_ = (b_3 * b_3);
+    float b_2 = clamp(beta_m, WEFT_HAIR_MIN_BETA_M, 1.0);
+    float b2_ = (b_2 * b_2);
     float b4_ = (b2_ * b2_);
     float b20_ = ((((b4_ * b4_) * b4_) * b4_) * b4_);
-    float _e18 = weft_hair_sqr((((0.726 * b_3) + (0.812 * b2_)) + (3.7 * b20_)));
+    float _e18 = weft_hair_sqr((((0.726 * b_2) + (0.812 * b2_)) + (3.7 * b20_)));
     return _e18;
 }
 
 float weft_hair_logistic_scale(float beta_n) {
-    float b_4 = clamp(beta_n, WEFT_HAIR_MIN_BETA_N, 1.0);
-    float b2_1 = (b_4 * b_4);
+    float b_3 = clamp(beta_n, WEFT_HAIR_MIN_BETA_N, 1.0);
+    float b2_1 = (b_3 * b_3);
     float b4_1 = (b2_1 * b2_1);
     float b22_ = (((((b4_1 * b4_1) * b4_1) * b4_1) * b4_1) * b2_1);
-    return (0.62665707 * (((0.265 * b_4) + (1.194 * b2_1)) + (5.372 * b22_)));
+    return (0.62665707 * (((0.265 * b_3) + (1.194 * b2_1)) + (5.372 * b22_)));
 }
 
 vec3 weft_hair_sigma_a_scaled(vec3 c, float scale_1) {
@@ -195,21 +198,21 @@ vec3 weft_hair_sigma_a_scaled(vec3 c, float scale_1) {
 }
 
 float weft_hair_sigma_a_scale(float beta_n_1) {
-    float b_5 = clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1.0);
-    float d = (((((5.969 - (0.215 * b_5)) + ((2.532 * b_5) * b_5)) - (10.73 * pow(b_5, 3.0))) + (5.574 * pow(b_5, 4.0))) + (0.245 * pow(b_5, 5.0)));
+    float b_4 = clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1.0);
+    float d = (((((5.969 - (0.215 * b_4)) + ((2.532 * b_4) * b_4)) - (10.73 * pow(b_4, 3.0))) + (5.574 * pow(b_4, 4.0))) + (0.245 * pow(b_4, 5.0)));
     return (1.0 / d);
 }
 
 WeftHair weft_hair_params(vec3 sigma_a, float eta_1, float beta_m_1, float beta_n_2, float alpha_deg) {
-    WeftHair hair = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0, vec4(0.0), 0.0);
+    WeftHair hair = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0, vec4(0.0), 0.0, 0.0);
     hair.sigma_a = max(sigma_a, vec3(0.0));
     hair.eta = max(eta_1, 1.0001);
     float _e13 = weft_hair_variance(beta_m_1);
     hair.v = vec4(_e13, (0.25 * _e13), (4.0 * _e13), (4.0 * _e13));
     float _e23 = weft_hair_logistic_scale(beta_n_2);
     hair.s = _e23;
-    float a_4 = radians(alpha_deg);
-    float s0_ = sin(a_4);
+    float a_3 = radians(alpha_deg);
+    float s0_ = sin(a_3);
     float _e29 = weft_hair_safe_sqrt((1.0 - (s0_ * s0_)));
     float s1_ = ((2.0 * _e29) * s0_);
     float c1_ = ((_e29 * _e29) - (s0_ * s0_));
@@ -233,8 +236,10 @@ WeftHair weft_hair_params(vec3 sigma_a, float eta_1, float beta_m_1, float beta_
     float sh = hair.s;
     hair.trt = vec4((-9.2609 + (sh * (65.993 - (107.38 * sh)))), (72.357 + (sh * (-624.68 + (1069.8 * sh)))), (-153.75 + (sh * (1704.7 - (3127.5 * sh)))), (-67.745 + (sh * (-1105.8 + (2706.6 * sh)))));
     hair.trt4_ = (239.74 - (430.94 * sh));
-    WeftHair _e122 = hair;
-    return _e122;
+    float _e124 = hair.eta;
+    hair.inv_eta = (1.0 / _e124);
+    WeftHair _e127 = hair;
+    return _e127;
 }
 
 float weft_hair_logistic(float x_2, float s) {
@@ -301,29 +306,28 @@ WeftHairLobes weft_hair_fast(WeftHair hair_1, vec3 t_1, vec3 o_1, vec3 i_1) {
     vec3 u = (vec3(1.0) / (vec3(1.0) + (0.7 * x_6)));
     vec3 bessel = ((vec3(1.0) + ((u * (vec3(1.0) - u)) * (vec3(0.181903) + (u * (vec3(-0.401835) + (u * 3.1851)))))) * inversesqrt((vec3(1.0) + (6.2831855 * x_6))));
     vec3 mp = ((exp(min(((((_e19 * co) - (sin_i_1 * so)) - vec3(1.0)) * inv_v), vec3(0.0))) * bessel) * norm);
-    float sin_t = (sin_o_1 / hair_1.eta);
-    float _e148 = weft_hair_safe_sqrt((1.0 - (sin_t * sin_t)));
-    float chord_1 = (2.0 / max(_e148, 0.0001));
-    float a_5 = (_e15 * inversesqrt(max(((hair_1.eta * hair_1.eta) - (sin_o_1 * sin_o_1)), 1e-8)));
+    float sin_t = (sin_o_1 * hair_1.inv_eta);
+    float chord_1 = (2.0 * inversesqrt(max((1.0 - (sin_t * sin_t)), 1e-8)));
+    float a_4 = (_e15 * inversesqrt(max(((hair_1.eta * hair_1.eta) - (sin_o_1 * sin_o_1)), 1e-8)));
     float sd = hair_1.blur.x;
     float cd = hair_1.blur.y;
     float c_r = sqrt(min(((0.5 + (0.5 * cos_phi_1)) + hair_1.r_floor), 1.0));
     float _e179 = weft_f_dielectric((_e15 * c_r), hair_1.eta);
     float r = ((0.25 * c_r) * _e179);
-    vec3 _e189 = weft_hair_fast_tt(((sin_half_1 * cd) + (cos_half * sd)), ((sin_half_1 * cd) - (cos_half * sd)), a_5, _e15, hair_1.eta, hair_1.sigma_a, chord_1);
+    vec3 _e189 = weft_hair_fast_tt(((sin_half_1 * cd) + (cos_half * sd)), ((sin_half_1 * cd) - (cos_half * sd)), a_4, _e15, hair_1.eta, hair_1.sigma_a, chord_1);
     float h_f = (0.6243 + (0.1898 * _e15));
     float _e197 = weft_hair_safe_sqrt((1.0 - (h_f * h_f)));
     float _e200 = weft_f_dielectric((_e15 * _e197), hair_1.eta);
     float h2_ = (0.4824 + (0.2778 * _e15));
     float _e208 = weft_hair_safe_sqrt((1.0 - (h2_ * h2_)));
     float _e211 = weft_f_dielectric((_e15 * _e208), hair_1.eta);
-    float _e219 = weft_hair_safe_sqrt((1.0 - (((h2_ * h2_) * a_5) * a_5)));
+    float _e219 = weft_hair_safe_sqrt((1.0 - (((h2_ * h2_) * a_4) * a_4)));
     vec3 t2_ = exp((-(hair_1.sigma_a) * (chord_1 * _e219)));
     float _e225 = weft_hair_sqr((1.0 - _e211));
     vec3 a2_ = (((_e225 * _e211) * t2_) * t2_);
     vec3 ft = (_e200 * t2_);
     vec3 a3_ = ((a2_ * ft) / (vec3(1.0) - ft));
-    float s2_fit = (hair_1.trt.x + (a_5 * (hair_1.trt.y + (a_5 * (hair_1.trt.z + (a_5 * (hair_1.trt.w + (a_5 * hair_1.trt4_))))))));
+    float s2_fit = (hair_1.trt.x + (a_4 * (hair_1.trt.y + (a_4 * (hair_1.trt.z + (a_4 * (hair_1.trt.w + (a_4 * hair_1.trt4_))))))));
     float s_trt = sqrt(max(exp(clamp(s2_fit, -9.0, 2.5)), (hair_1.s * hair_1.s)));
     float _e262 = weft_hair_trimmed_logistic(acos(cos_phi_1), s_trt);
     out_4.s = ((vec3((mp.x * r)) + (mp.y * _e189)) + (mp.z * ((a2_ * _e262) + (a3_ * 0.15915494))));
@@ -334,9 +338,13 @@ WeftHairLobes weft_hair_fast(WeftHair hair_1, vec3 t_1, vec3 o_1, vec3 i_1) {
     return _e290;
 }
 
+float hair_noise_period(float density) {
+    return max(roundEven(density), 1.0);
+}
+
 WeftHair hair_from_varyings(HairVaryings in_5, vec3 sigma_a_2) {
     float v_1 = in_5.fibre.z;
-    return WeftHair(max(sigma_a_2, vec3(0.0)), in_5.fibre.x, vec4(v_1, (0.25 * v_1), (4.0 * v_1), (4.0 * v_1)), in_5.fibre.y, in_5.sin2k.xyz, in_5.cos2k.xyz, in_5.inv_v.xyz, in_5.mp_norm.xyz, vec2(in_5.cos2k.w, in_5.mp_norm.w), in_5.sin2k.w, vec4(in_5.inv_v.w, in_5.trt.xyz), in_5.trt.w);
+    return WeftHair(max(sigma_a_2, vec3(0.0)), in_5.fibre.x, vec4(v_1, (0.25 * v_1), (4.0 * v_1), (4.0 * v_1)), in_5.fibre.y, in_5.sin2k.xyz, in_5.cos2k.xyz, in_5.inv_v.xyz, in_5.mp_norm.xyz, vec2(in_5.cos2k.w, in_5.mp_norm.w), in_5.sin2k.w, vec4(in_5.inv_v.w, in_5.trt.xyz), in_5.trt.w, in_5.jitter.z);
 }
 
 float hair_hash(uint x_4) {
@@ -345,15 +353,14 @@ float hair_hash(uint x_4) {
     return (float(((word >> 22u) ^ word)) * 2.3283064e-10);
 }
 
-float hair_value_noise(float x_5, float period) {
-    float p = max(roundEven(period), 1.0);
+float hair_value_noise(float x_5, float p) {
     float cell = floor(x_5);
     float f_1 = (x_5 - cell);
     float c0_ = (cell - (p * floor((cell / p))));
     float c1_1 = (((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0));
-    float _e19 = hair_hash(uint(c0_));
-    float _e21 = hair_hash(uint(c1_1));
-    return (mix(_e19, _e21, ((f_1 * f_1) * (3.0 - (2.0 * f_1)))) - 0.5);
+    float _e16 = hair_hash(uint(c0_));
+    float _e18 = hair_hash(uint(c1_1));
+    return (mix(_e16, _e18, ((f_1 * f_1) * (3.0 - (2.0 * f_1)))) - 0.5);
 }
 
 void main() {

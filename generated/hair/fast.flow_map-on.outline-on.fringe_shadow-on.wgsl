@@ -92,6 +92,7 @@ struct WeftHair {
     r_floor: f32,
     trt: vec4<f32>,
     trt4_: f32,
+    inv_eta: f32,
 }
 
 struct WeftHairLobes {
@@ -117,6 +118,7 @@ struct HairVaryings {
     @location(7) @interpolate(flat) mp_norm: vec4<f32>,
     @location(8) @interpolate(flat) inv_v: vec4<f32>,
     @location(9) @interpolate(flat) trt: vec4<f32>,
+    @location(10) @interpolate(flat) jitter: vec4<f32>,
 }
 
 const WEFT_PI: f32 = 3.1415927f;
@@ -168,9 +170,10 @@ fn weft_f_dielectric(cos_i: f32, eta: f32) -> f32 {
     let g = sqrt(max(g2_, 0f));
     let gmc = (g - c_1);
     let gpc = max((g + c_1), 0.0000001f);
-    let a_3 = (gmc / gpc);
-    let b_1 = (((c_1 * gpc) - 1f) / max(((c_1 * gmc) + 1f), 0.0000001f));
-    let f = saturate((((0.5f * a_3) * a_3) * (1f + (b_1 * b_1))));
+    let b_den = max(((c_1 * gmc) + 1f), 0.0000001f);
+    let b_num = ((c_1 * gpc) - 1f);
+    let inv = (1f / (gpc * b_den));
+    let f = saturate(((((0.5f * gmc) * gmc) * ((b_den * b_den) + (b_num * b_num))) * (inv * inv)));
     return select(f, 1f, (g2_ < 0f));
 }
 
@@ -252,8 +255,8 @@ fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let _e13 = weft_any_perpendicular(n_2);
     let t_2 = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_3 = select(1f, -1f, (tangent.w < 0f));
-    let b_2 = (cross(n_2, t_2) * s_3);
-    return mat3x3<f32>(t_2, b_2, n_2);
+    let b_1 = (cross(n_2, t_2) * s_3);
+    return mat3x3<f32>(t_2, b_1, n_2);
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -269,20 +272,20 @@ fn weft_hair_safe_sqrt(x_1: f32) -> f32 {
 }
 
 fn weft_hair_variance(beta_m: f32) -> f32 {
-    let b_3 = clamp(beta_m, WEFT_HAIR_MIN_BETA_M, 1f);
-    let b2_ = (b_3 * b_3);
+    let b_2 = clamp(beta_m, WEFT_HAIR_MIN_BETA_M, 1f);
+    let b2_ = (b_2 * b_2);
     let b4_ = (b2_ * b2_);
     let b20_ = ((((b4_ * b4_) * b4_) * b4_) * b4_);
-    let _e18 = weft_hair_sqr((((0.726f * b_3) + (0.812f * b2_)) + (3.7f * b20_)));
+    let _e18 = weft_hair_sqr((((0.726f * b_2) + (0.812f * b2_)) + (3.7f * b20_)));
     return _e18;
 }
 
 fn weft_hair_logistic_scale(beta_n: f32) -> f32 {
-    let b_4 = clamp(beta_n, WEFT_HAIR_MIN_BETA_N, 1f);
-    let b2_1 = (b_4 * b_4);
+    let b_3 = clamp(beta_n, WEFT_HAIR_MIN_BETA_N, 1f);
+    let b2_1 = (b_3 * b_3);
     let b4_1 = (b2_1 * b2_1);
     let b22_ = (((((b4_1 * b4_1) * b4_1) * b4_1) * b4_1) * b2_1);
-    return (0.62665707f * (((0.265f * b_4) + (1.194f * b2_1)) + (5.372f * b22_)));
+    return (0.62665707f * (((0.265f * b_3) + (1.194f * b2_1)) + (5.372f * b22_)));
 }
 
 fn weft_hair_sigma_a_scaled(c: vec3<f32>, scale_1: f32) -> vec3<f32> {
@@ -291,8 +294,8 @@ fn weft_hair_sigma_a_scaled(c: vec3<f32>, scale_1: f32) -> vec3<f32> {
 }
 
 fn weft_hair_sigma_a_scale(beta_n_1: f32) -> f32 {
-    let b_5 = clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1f);
-    let d = (((((5.969f - (0.215f * b_5)) + ((2.532f * b_5) * b_5)) - (10.73f * pow(b_5, 3f))) + (5.574f * pow(b_5, 4f))) + (0.245f * pow(b_5, 5f)));
+    let b_4 = clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1f);
+    let d = (((((5.969f - (0.215f * b_4)) + ((2.532f * b_4) * b_4)) - (10.73f * pow(b_4, 3f))) + (5.574f * pow(b_4, 4f))) + (0.245f * pow(b_4, 5f)));
     return (1f / d);
 }
 
@@ -305,8 +308,8 @@ fn weft_hair_params(sigma_a: vec3<f32>, eta_1: f32, beta_m_1: f32, beta_n_2: f32
     hair.v = vec4<f32>(_e13, (0.25f * _e13), (4f * _e13), (4f * _e13));
     let _e23 = weft_hair_logistic_scale(beta_n_2);
     hair.s = _e23;
-    let a_4 = radians(alpha_deg);
-    let s0_ = sin(a_4);
+    let a_3 = radians(alpha_deg);
+    let s0_ = sin(a_3);
     let _e29 = weft_hair_safe_sqrt((1f - (s0_ * s0_)));
     let s1_ = ((2f * _e29) * s0_);
     let c1_ = ((_e29 * _e29) - (s0_ * s0_));
@@ -330,8 +333,10 @@ fn weft_hair_params(sigma_a: vec3<f32>, eta_1: f32, beta_m_1: f32, beta_n_2: f32
     let sh_1 = hair.s;
     hair.trt = vec4<f32>((-9.2609f + (sh_1 * (65.993f - (107.38f * sh_1)))), (72.357f + (sh_1 * (-624.68f + (1069.8f * sh_1)))), (-153.75f + (sh_1 * (1704.7f - (3127.5f * sh_1)))), (-67.745f + (sh_1 * (-1105.8f + (2706.6f * sh_1)))));
     hair.trt4_ = (239.74f - (430.94f * sh_1));
-    let _e122 = hair;
-    return _e122;
+    let _e124 = hair.eta;
+    hair.inv_eta = (1f / _e124);
+    let _e127 = hair;
+    return _e127;
 }
 
 fn weft_hair_logistic(x_2: f32, s: f32) -> f32 {
@@ -400,29 +405,28 @@ fn weft_hair_fast(hair_1: WeftHair, t_1: vec3<f32>, o_1: vec3<f32>, i_1: vec3<f3
     let u = (vec3(1f) / (vec3(1f) + (0.7f * x_6)));
     let bessel = ((vec3(1f) + ((u * (vec3(1f) - u)) * (vec3(0.181903f) + (u * (vec3(-0.401835f) + (u * 3.1851f)))))) * inverseSqrt((vec3(1f) + (6.2831855f * x_6))));
     let mp = ((exp(min(((((_e19 * co) - (sin_i_1 * so)) - vec3(1f)) * inv_v), vec3(0f))) * bessel) * norm);
-    let sin_t = (sin_o_1 / hair_1.eta);
-    let _e148 = weft_hair_safe_sqrt((1f - (sin_t * sin_t)));
-    let chord_1 = (2f / max(_e148, 0.0001f));
-    let a_5 = (_e15 * inverseSqrt(max(((hair_1.eta * hair_1.eta) - (sin_o_1 * sin_o_1)), 0.00000001f)));
+    let sin_t = (sin_o_1 * hair_1.inv_eta);
+    let chord_1 = (2f * inverseSqrt(max((1f - (sin_t * sin_t)), 0.00000001f)));
+    let a_4 = (_e15 * inverseSqrt(max(((hair_1.eta * hair_1.eta) - (sin_o_1 * sin_o_1)), 0.00000001f)));
     let sd = hair_1.blur.x;
     let cd = hair_1.blur.y;
     let c_r = sqrt(min(((0.5f + (0.5f * cos_phi_1)) + hair_1.r_floor), 1f));
     let _e179 = weft_f_dielectric((_e15 * c_r), hair_1.eta);
     let r = ((0.25f * c_r) * _e179);
-    let _e189 = weft_hair_fast_tt(((sin_half_1 * cd) + (cos_half * sd)), ((sin_half_1 * cd) - (cos_half * sd)), a_5, _e15, hair_1.eta, hair_1.sigma_a, chord_1);
+    let _e189 = weft_hair_fast_tt(((sin_half_1 * cd) + (cos_half * sd)), ((sin_half_1 * cd) - (cos_half * sd)), a_4, _e15, hair_1.eta, hair_1.sigma_a, chord_1);
     let h_f = (0.6243f + (0.1898f * _e15));
     let _e197 = weft_hair_safe_sqrt((1f - (h_f * h_f)));
     let _e200 = weft_f_dielectric((_e15 * _e197), hair_1.eta);
     let h2_ = (0.4824f + (0.2778f * _e15));
     let _e208 = weft_hair_safe_sqrt((1f - (h2_ * h2_)));
     let _e211 = weft_f_dielectric((_e15 * _e208), hair_1.eta);
-    let _e219 = weft_hair_safe_sqrt((1f - (((h2_ * h2_) * a_5) * a_5)));
+    let _e219 = weft_hair_safe_sqrt((1f - (((h2_ * h2_) * a_4) * a_4)));
     let t2_ = exp((-(hair_1.sigma_a) * (chord_1 * _e219)));
     let _e225 = weft_hair_sqr((1f - _e211));
     let a2_ = (((_e225 * _e211) * t2_) * t2_);
     let ft = (_e200 * t2_);
     let a3_ = ((a2_ * ft) / (vec3(1f) - ft));
-    let s2_fit = (hair_1.trt.x + (a_5 * (hair_1.trt.y + (a_5 * (hair_1.trt.z + (a_5 * (hair_1.trt.w + (a_5 * hair_1.trt4_))))))));
+    let s2_fit = (hair_1.trt.x + (a_4 * (hair_1.trt.y + (a_4 * (hair_1.trt.z + (a_4 * (hair_1.trt.w + (a_4 * hair_1.trt4_))))))));
     let s_trt = sqrt(max(exp(clamp(s2_fit, -9f, 2.5f)), (hair_1.s * hair_1.s)));
     let _e262 = weft_hair_trimmed_logistic(acos(cos_phi_1), s_trt);
     out_4.s = ((vec3((mp.x * r)) + (mp.y * _e189)) + (mp.z * ((a2_ * _e262) + (a3_ * 0.15915494f))));
@@ -433,9 +437,13 @@ fn weft_hair_fast(hair_1: WeftHair, t_1: vec3<f32>, o_1: vec3<f32>, i_1: vec3<f3
     return _e290;
 }
 
+fn hair_noise_period(density: f32) -> f32 {
+    return max(round(density), 1f);
+}
+
 fn hair_from_varyings(in_5: HairVaryings, sigma_a_2: vec3<f32>) -> WeftHair {
     let v_1 = in_5.fibre.z;
-    return WeftHair(max(sigma_a_2, vec3(0f)), in_5.fibre.x, vec4<f32>(v_1, (0.25f * v_1), (4f * v_1), (4f * v_1)), in_5.fibre.y, in_5.sin2k.xyz, in_5.cos2k.xyz, in_5.inv_v.xyz, in_5.mp_norm.xyz, vec2<f32>(in_5.cos2k.w, in_5.mp_norm.w), in_5.sin2k.w, vec4<f32>(in_5.inv_v.w, in_5.trt.xyz), in_5.trt.w);
+    return WeftHair(max(sigma_a_2, vec3(0f)), in_5.fibre.x, vec4<f32>(v_1, (0.25f * v_1), (4f * v_1), (4f * v_1)), in_5.fibre.y, in_5.sin2k.xyz, in_5.cos2k.xyz, in_5.inv_v.xyz, in_5.mp_norm.xyz, vec2<f32>(in_5.cos2k.w, in_5.mp_norm.w), in_5.sin2k.w, vec4<f32>(in_5.inv_v.w, in_5.trt.xyz), in_5.trt.w, in_5.jitter.z);
 }
 
 fn hair_strand(frame: mat3x3<f32>, uv0_: vec2<f32>) -> vec3<f32> {
@@ -462,37 +470,33 @@ fn hair_hash(x_4: u32) -> f32 {
     return (f32(((word >> 22u) ^ word)) * 0.00000000023283064f);
 }
 
-fn hair_value_noise(x_5: f32, period: f32) -> f32 {
-    let p = max(round(period), 1f);
+fn hair_value_noise(x_5: f32, p: f32) -> f32 {
     let cell = floor(x_5);
     let f_2 = (x_5 - cell);
     let c0_ = (cell - (p * floor((cell / p))));
     let c1_1 = select((c0_ + 1f), 0f, ((c0_ + 1f) >= p));
-    let _e19 = hair_hash(u32(c0_));
-    let _e21 = hair_hash(u32(c1_1));
-    return (mix(_e19, _e21, ((f_2 * f_2) * (3f - (2f * f_2)))) - 0.5f);
+    let _e16 = hair_hash(u32(c0_));
+    let _e18 = hair_hash(u32(c1_1));
+    return (mix(_e16, _e18, ((f_2 * f_2) * (3f - (2f * f_2)))) - 0.5f);
 }
 
-fn hair_jitter(uv0_1: vec2<f32>) -> f32 {
-    let _e3 = textureSample(uv_rotate_mask, material_sampler, uv0_1);
-    let mask = step(0.8f, _e3.x);
-    let _e9 = material.anisotropic_direction;
-    let a_6 = radians(_e9);
-    let c_2 = cos(a_6);
-    let s_4 = sin(a_6);
+fn hair_jitter(uv0_1: vec2<f32>, per_vertex: vec4<f32>) -> f32 {
+    let _e4 = textureSample(uv_rotate_mask, material_sampler, uv0_1);
+    let mask = step(0.8f, _e4.x);
+    let c_2 = per_vertex.x;
+    let s_4 = per_vertex.y;
     let rotated = vec2<f32>(((c_2 * uv0_1.x) + (s_4 * uv0_1.y)), ((-(s_4) * uv0_1.x) + (c_2 * uv0_1.y)));
-    let _e30 = material.jitter_map_st;
-    let _e31 = weft_transform_uv(select(uv0_1, rotated, (mask > 0.5f)), _e30);
-    let _e34 = textureSample(jitter_map, material_sampler, _e31);
-    let j = _e34.x;
-    let _e40 = material.strand_along_tangent;
-    let across = select(_e31.x, _e31.y, (_e40 != 0u));
-    let _e46 = material.jitter_strength;
-    let _e50 = material.strand_noise;
-    let _e53 = material.strand_density;
-    let _e57 = material.strand_density;
-    let _e58 = hair_value_noise((across * _e53), _e57);
-    return ((_e46 * j) + (_e50 * _e58));
+    let _e27 = material.jitter_map_st;
+    let _e28 = weft_transform_uv(select(uv0_1, rotated, (mask > 0.5f)), _e27);
+    let _e31 = textureSample(jitter_map, material_sampler, _e28);
+    let j = _e31.x;
+    let _e37 = material.strand_along_tangent;
+    let across = select(_e28.x, _e28.y, (_e37 != 0u));
+    let _e43 = material.jitter_strength;
+    let _e47 = material.strand_noise;
+    let _e50 = material.strand_density;
+    let _e53 = hair_value_noise((across * _e50), per_vertex.w);
+    return ((_e43 * j) + (_e47 * _e53));
 }
 
 @vertex 
@@ -595,21 +599,26 @@ fn vs_hair(in_2: WeftVertexInput) -> HairVaryings {
         let _e23 = weft_hair_sigma_a_scale(_e22);
         scale = _e23;
     }
-    let _e30 = h.eta;
-    let _e32 = h.s;
-    let _e35 = h.v.x;
-    let _e36 = scale;
-    let _e39 = h.sin2k;
-    let _e41 = h.r_floor;
-    let _e44 = h.cos2k;
-    let _e47 = h.blur.x;
-    let _e50 = h.mp_norm;
-    let _e53 = h.blur.y;
-    let _e56 = h.inv_v;
-    let _e59 = h.trt.x;
-    let _e62 = h.trt;
-    let _e65 = h.trt4_;
-    return HairVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, vec4<f32>(_e30, _e32, _e35, _e36), vec4<f32>(_e39, _e41), vec4<f32>(_e44, _e47), vec4<f32>(_e50, _e53), vec4<f32>(_e56, _e59), vec4<f32>(_e62.yzw, _e65));
+    let _e26 = material.anisotropic_direction;
+    let a_5 = radians(_e26);
+    let _e34 = h.eta;
+    let _e36 = h.s;
+    let _e39 = h.v.x;
+    let _e40 = scale;
+    let _e43 = h.sin2k;
+    let _e45 = h.r_floor;
+    let _e48 = h.cos2k;
+    let _e51 = h.blur.x;
+    let _e54 = h.mp_norm;
+    let _e57 = h.blur.y;
+    let _e60 = h.inv_v;
+    let _e63 = h.trt.x;
+    let _e66 = h.trt;
+    let _e69 = h.trt4_;
+    let _e74 = h.inv_eta;
+    let _e77 = material.strand_density;
+    let _e78 = hair_noise_period(_e77);
+    return HairVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, vec4<f32>(_e34, _e36, _e39, _e40), vec4<f32>(_e43, _e45), vec4<f32>(_e48, _e51), vec4<f32>(_e54, _e57), vec4<f32>(_e60, _e63), vec4<f32>(_e66.yzw, _e69), vec4<f32>(cos(a_5), sin(a_5), _e74, _e78));
 }
 
 @fragment 
@@ -629,29 +638,29 @@ fn fs_main(in_3: HairVaryings) -> @location(0) vec4<f32> {
     let n_3 = _e19.n;
     let _e23 = weft_tangent_frame(n_3, in_3.world_tangent);
     let _e25 = hair_strand(_e23, in_3.uv0_);
-    let _e27 = hair_jitter(in_3.uv0_);
-    let _e28 = weft_main_light_direction();
-    let _e29 = weft_main_light_radiance();
-    let _e30 = weft_sh_irradiance(n_3);
-    let n_dot_l = dot(n_3, _e28);
+    let _e28 = hair_jitter(in_3.uv0_, in_3.jitter);
+    let _e29 = weft_main_light_direction();
+    let _e30 = weft_main_light_radiance();
+    let _e31 = weft_sh_irradiance(n_3);
+    let n_dot_l = dot(n_3, _e29);
     {
-        let _e35 = weft_safe_normalize((_e25 + (_e27 * n_3)), _e25);
-        let _e38 = weft_hair_sigma_a_scaled(base, in_3.fibre.w);
-        let _e39 = hair_from_varyings(in_3, _e38);
-        let _e40 = weft_hair_angles(_e35, v_2, _e28);
+        let _e36 = weft_safe_normalize((_e25 + (_e28 * n_3)), _e25);
+        let _e39 = weft_hair_sigma_a_scaled(base, in_3.fibre.w);
+        let _e40 = hair_from_varyings(in_3, _e39);
+        let _e41 = weft_hair_angles(_e36, v_2, _e29);
         {
-            let _e42 = weft_hair_fast(_e39, _e35, v_2, _e28);
-            lobes = _e42;
+            let _e43 = weft_hair_fast(_e40, _e36, v_2, _e29);
+            lobes = _e43;
         }
         let body = smoothstep(-0.25f, HAIR_TERMINATOR, n_dot_l);
-        let _e49 = lobes.back;
-        let multiple = (base * (vec3(1f) - _e49));
-        let _e53 = lobes.s;
-        let direct = ((_e53 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
-        let _e62 = lobes.back;
-        color = ((direct * _e29) + (_e30 * (multiple + _e62)));
+        let _e50 = lobes.back;
+        let multiple = (base * (vec3(1f) - _e50));
+        let _e54 = lobes.s;
+        let direct = ((_e54 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
+        let _e63 = lobes.back;
+        color = ((direct * _e30) + (_e31 * (multiple + _e63)));
     }
-    let _e66 = color;
-    let radiance = clamp(_e66, vec3(0f), vec3(65504f));
+    let _e67 = color;
+    let radiance = clamp(_e67, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

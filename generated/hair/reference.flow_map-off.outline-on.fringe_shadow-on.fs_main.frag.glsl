@@ -83,6 +83,7 @@ struct WeftHair {
     float r_floor;
     vec4 trt;
     float trt4_;
+    float inv_eta;
 };
 struct WeftHairAttenuation {
     float a0_;
@@ -112,6 +113,7 @@ struct HairVaryings {
     vec4 mp_norm;
     vec4 inv_v;
     vec4 trt;
+    vec4 jitter;
 };
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
@@ -147,6 +149,7 @@ layout(location = 6) flat in vec4 _vs2fs_location6;
 layout(location = 7) flat in vec4 _vs2fs_location7;
 layout(location = 8) flat in vec4 _vs2fs_location8;
 layout(location = 9) flat in vec4 _vs2fs_location9;
+layout(location = 10) flat in vec4 _vs2fs_location10;
 layout(location = 0) out vec4 _fs2p_location0;
 
 vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
@@ -167,9 +170,10 @@ float weft_f_dielectric(float cos_i, float eta) {
     float g = sqrt(max(g2_, 0.0));
     float gmc = (g - c_1);
     float gpc = max((g + c_1), 1e-7);
-    float a_2 = (gmc / gpc);
-    float b_1 = (((c_1 * gpc) - 1.0) / max(((c_1 * gmc) + 1.0), 1e-7));
-    float f = clamp((((0.5 * a_2) * a_2) * (1.0 + (b_1 * b_1))), 0.0, 1.0);
+    float b_den = max(((c_1 * gmc) + 1.0), 1e-7);
+    float b_num = ((c_1 * gpc) - 1.0);
+    float inv = (1.0 / (gpc * b_den));
+    float f = clamp(((((0.5 * gmc) * gmc) * ((b_den * b_den) + (b_num * b_num))) * (inv * inv)), 0.0, 1.0);
     return ((g2_ < 0.0) ? 1.0 : f);
 }
 
@@ -228,8 +232,8 @@ mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
     vec3 _e13 = weft_any_perpendicular(n_2);
     vec3 t_1 = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_7 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_2 = (cross(n_2, t_1) * s_7);
-    return mat3x3(t_1, b_2, n_2);
+    vec3 b_1 = (cross(n_2, t_1) * s_7);
+    return mat3x3(t_1, b_1, n_2);
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
@@ -245,20 +249,20 @@ float weft_hair_safe_sqrt(float x_1) {
 }
 
 float weft_hair_variance(float beta_m) {
-    float b_3 = clamp(beta_m, WEFT_HAIR_MIN_BETA_M, 1.0);
-    float b2_ = (b_3 * b_3);
+    float b_2 = clamp(beta_m, WEFT_HAIR_MIN_BETA_M, 1.0);
+    float b2_ = (b_2 * b_2);
     float b4_ = (b2_ * b2_);
     float b20_ = ((((b4_ * b4_) * b4_) * b4_) * b4_);
-    float _e18 = weft_hair_sqr((((0.726 * b_3) + (0.812 * b2_)) + (3.7 * b20_)));
+    float _e18 = weft_hair_sqr((((0.726 * b_2) + (0.812 * b2_)) + (3.7 * b20_)));
     return _e18;
 }
 
 float weft_hair_logistic_scale(float beta_n) {
-    float b_4 = clamp(beta_n, WEFT_HAIR_MIN_BETA_N, 1.0);
-    float b2_1 = (b_4 * b_4);
+    float b_3 = clamp(beta_n, WEFT_HAIR_MIN_BETA_N, 1.0);
+    float b2_1 = (b_3 * b_3);
     float b4_1 = (b2_1 * b2_1);
     float b22_ = (((((b4_1 * b4_1) * b4_1) * b4_1) * b4_1) * b2_1);
-    return (0.62665707 * (((0.265 * b_4) + (1.194 * b2_1)) + (5.372 * b22_)));
+    return (0.62665707 * (((0.265 * b_3) + (1.194 * b2_1)) + (5.372 * b22_)));
 }
 
 vec3 weft_hair_sigma_a_scaled(vec3 c, float scale_1) {
@@ -267,21 +271,21 @@ vec3 weft_hair_sigma_a_scaled(vec3 c, float scale_1) {
 }
 
 float weft_hair_sigma_a_scale(float beta_n_1) {
-    float b_5 = clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1.0);
-    float d = (((((5.969 - (0.215 * b_5)) + ((2.532 * b_5) * b_5)) - (10.73 * pow(b_5, 3.0))) + (5.574 * pow(b_5, 4.0))) + (0.245 * pow(b_5, 5.0)));
+    float b_4 = clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1.0);
+    float d = (((((5.969 - (0.215 * b_4)) + ((2.532 * b_4) * b_4)) - (10.73 * pow(b_4, 3.0))) + (5.574 * pow(b_4, 4.0))) + (0.245 * pow(b_4, 5.0)));
     return (1.0 / d);
 }
 
 WeftHair weft_hair_params(vec3 sigma_a, float eta_1, float beta_m_1, float beta_n_2, float alpha_deg) {
-    WeftHair hair = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0, vec4(0.0), 0.0);
+    WeftHair hair = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0, vec4(0.0), 0.0, 0.0);
     hair.sigma_a = max(sigma_a, vec3(0.0));
     hair.eta = max(eta_1, 1.0001);
     float _e13 = weft_hair_variance(beta_m_1);
     hair.v = vec4(_e13, (0.25 * _e13), (4.0 * _e13), (4.0 * _e13));
     float _e23 = weft_hair_logistic_scale(beta_n_2);
     hair.s = _e23;
-    float a_3 = radians(alpha_deg);
-    float s0_ = sin(a_3);
+    float a_2 = radians(alpha_deg);
+    float s0_ = sin(a_2);
     float _e29 = weft_hair_safe_sqrt((1.0 - (s0_ * s0_)));
     float s1_ = ((2.0 * _e29) * s0_);
     float c1_ = ((_e29 * _e29) - (s0_ * s0_));
@@ -305,8 +309,10 @@ WeftHair weft_hair_params(vec3 sigma_a, float eta_1, float beta_m_1, float beta_
     float sh_1 = hair.s;
     hair.trt = vec4((-9.2609 + (sh_1 * (65.993 - (107.38 * sh_1)))), (72.357 + (sh_1 * (-624.68 + (1069.8 * sh_1)))), (-153.75 + (sh_1 * (1704.7 - (3127.5 * sh_1)))), (-67.745 + (sh_1 * (-1105.8 + (2706.6 * sh_1)))));
     hair.trt4_ = (239.74 - (430.94 * sh_1));
-    WeftHair _e122 = hair;
-    return _e122;
+    float _e124 = hair.eta;
+    hair.inv_eta = (1.0 / _e124);
+    WeftHair _e127 = hair;
+    return _e127;
 }
 
 float weft_hair_i0_(float x_2) {
@@ -350,14 +356,14 @@ float weft_hair_log_i0_(float x_3) {
 }
 
 float weft_hair_mp(float cos_i_1, float cos_o, float sin_i, float sin_o, float v_1) {
-    float a_4 = ((cos_i_1 * cos_o) / v_1);
-    float b_6 = ((sin_i * sin_o) / v_1);
+    float a_3 = ((cos_i_1 * cos_o) / v_1);
+    float b_5 = ((sin_i * sin_o) / v_1);
     if ((v_1 <= 0.1)) {
-        float _e11 = weft_hair_log_i0_(a_4);
-        return exp(((((_e11 - b_6) - (1.0 / v_1)) + 0.6931472) + log((1.0 / (2.0 * v_1)))));
+        float _e11 = weft_hair_log_i0_(a_3);
+        return exp(((((_e11 - b_5) - (1.0 / v_1)) + 0.6931472) + log((1.0 / (2.0 * v_1)))));
     }
-    float _e27 = weft_hair_i0_(a_4);
-    return ((exp(-(b_6)) * _e27) / ((sinh((1.0 / v_1)) * 2.0) * v_1));
+    float _e27 = weft_hair_i0_(a_3);
+    return ((exp(-(b_5)) * _e27) / ((sinh((1.0 / v_1)) * 2.0) * v_1));
 }
 
 vec4 weft_hair_longitudinal(WeftHair hair_1, float sin_o_1, float cos_o_1, float sin_i_1, float cos_i_2) {
@@ -435,10 +441,10 @@ float weft_hair_trimmed_integral(float lo, float hi, float s_3) {
     float sum_1 = 0.0;
     float _e4 = weft_hair_logistic_cdf(-3.1415927, s_3);
     float _e6 = weft_hair_logistic_cdf(WEFT_PI, s_3);
-    float a_5 = clamp(lo, -3.1415927, WEFT_PI);
-    float b_7 = clamp(hi, -3.1415927, WEFT_PI);
-    float _e13 = weft_hair_logistic_cdf(b_7, s_3);
-    float _e14 = weft_hair_logistic_cdf(a_5, s_3);
+    float a_4 = clamp(lo, -3.1415927, WEFT_PI);
+    float b_6 = clamp(hi, -3.1415927, WEFT_PI);
+    float _e13 = weft_hair_logistic_cdf(b_6, s_3);
+    float _e14 = weft_hair_logistic_cdf(a_4, s_3);
     sum_1 = (_e13 - _e14);
     if ((hi > WEFT_PI)) {
         float _e19 = sum_1;
@@ -536,9 +542,13 @@ WeftHairLobes weft_hair_mean(WeftHair hair_4, WeftHairAngles angles, uint count)
     return _e172;
 }
 
+float hair_noise_period(float density) {
+    return max(roundEven(density), 1.0);
+}
+
 WeftHair hair_from_varyings(HairVaryings in_5, vec3 sigma_a_1) {
     float v_2 = in_5.fibre.z;
-    return WeftHair(max(sigma_a_1, vec3(0.0)), in_5.fibre.x, vec4(v_2, (0.25 * v_2), (4.0 * v_2), (4.0 * v_2)), in_5.fibre.y, in_5.sin2k.xyz, in_5.cos2k.xyz, in_5.inv_v.xyz, in_5.mp_norm.xyz, vec2(in_5.cos2k.w, in_5.mp_norm.w), in_5.sin2k.w, vec4(in_5.inv_v.w, in_5.trt.xyz), in_5.trt.w);
+    return WeftHair(max(sigma_a_1, vec3(0.0)), in_5.fibre.x, vec4(v_2, (0.25 * v_2), (4.0 * v_2), (4.0 * v_2)), in_5.fibre.y, in_5.sin2k.xyz, in_5.cos2k.xyz, in_5.inv_v.xyz, in_5.mp_norm.xyz, vec2(in_5.cos2k.w, in_5.mp_norm.w), in_5.sin2k.w, vec4(in_5.inv_v.w, in_5.trt.xyz), in_5.trt.w, in_5.jitter.z);
 }
 
 vec3 hair_strand(mat3x3 frame, vec2 uv0_) {
@@ -557,41 +567,37 @@ float hair_hash(uint x_7) {
     return (float(((word >> 22u) ^ word)) * 2.3283064e-10);
 }
 
-float hair_value_noise(float x_8, float period) {
-    float p = max(roundEven(period), 1.0);
+float hair_value_noise(float x_8, float p) {
     float cell = floor(x_8);
     float f_1 = (x_8 - cell);
     float c0_ = (cell - (p * floor((cell / p))));
     float c1_1 = (((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0));
-    float _e19 = hair_hash(uint(c0_));
-    float _e21 = hair_hash(uint(c1_1));
-    return (mix(_e19, _e21, ((f_1 * f_1) * (3.0 - (2.0 * f_1)))) - 0.5);
+    float _e16 = hair_hash(uint(c0_));
+    float _e18 = hair_hash(uint(c1_1));
+    return (mix(_e16, _e18, ((f_1 * f_1) * (3.0 - (2.0 * f_1)))) - 0.5);
 }
 
-float hair_jitter(vec2 uv0_1) {
-    vec4 _e3 = texture(_group_1_binding_6_fs, vec2(uv0_1));
-    float mask = step(0.8, _e3.x);
-    float _e9 = _group_1_binding_0_fs.anisotropic_direction;
-    float a_6 = radians(_e9);
-    float c_2 = cos(a_6);
-    float s_8 = sin(a_6);
+float hair_jitter(vec2 uv0_1, vec4 per_vertex) {
+    vec4 _e4 = texture(_group_1_binding_6_fs, vec2(uv0_1));
+    float mask = step(0.8, _e4.x);
+    float c_2 = per_vertex.x;
+    float s_8 = per_vertex.y;
     vec2 rotated = vec2(((c_2 * uv0_1.x) + (s_8 * uv0_1.y)), ((-(s_8) * uv0_1.x) + (c_2 * uv0_1.y)));
-    vec4 _e30 = _group_1_binding_0_fs.jitter_map_st;
-    vec2 _e31 = weft_transform_uv(((mask > 0.5) ? rotated : uv0_1), _e30);
-    vec4 _e34 = texture(_group_1_binding_5_fs, vec2(_e31));
-    float j = _e34.x;
-    uint _e40 = _group_1_binding_0_fs.strand_along_tangent;
-    float across = ((_e40 != 0u) ? _e31.y : _e31.x);
-    float _e46 = _group_1_binding_0_fs.jitter_strength;
-    float _e50 = _group_1_binding_0_fs.strand_noise;
-    float _e53 = _group_1_binding_0_fs.strand_density;
-    float _e57 = _group_1_binding_0_fs.strand_density;
-    float _e58 = hair_value_noise((across * _e53), _e57);
-    return ((_e46 * j) + (_e50 * _e58));
+    vec4 _e27 = _group_1_binding_0_fs.jitter_map_st;
+    vec2 _e28 = weft_transform_uv(((mask > 0.5) ? rotated : uv0_1), _e27);
+    vec4 _e31 = texture(_group_1_binding_5_fs, vec2(_e28));
+    float j = _e31.x;
+    uint _e37 = _group_1_binding_0_fs.strand_along_tangent;
+    float across = ((_e37 != 0u) ? _e28.y : _e28.x);
+    float _e43 = _group_1_binding_0_fs.jitter_strength;
+    float _e47 = _group_1_binding_0_fs.strand_noise;
+    float _e50 = _group_1_binding_0_fs.strand_density;
+    float _e53 = hair_value_noise((across * _e50), per_vertex.w);
+    return ((_e43 * j) + (_e47 * _e53));
 }
 
 void main() {
-    HairVaryings in_3 = HairVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3, _vs2fs_location4, _vs2fs_location5, _vs2fs_location6, _vs2fs_location7, _vs2fs_location8, _vs2fs_location9);
+    HairVaryings in_3 = HairVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3, _vs2fs_location4, _vs2fs_location5, _vs2fs_location6, _vs2fs_location7, _vs2fs_location8, _vs2fs_location9, _vs2fs_location10);
     vec3 color = vec3(0.0);
     WeftHairLobes lobes = WeftHairLobes(vec3(0.0), vec3(0.0), vec3(0.0));
     vec4 _e4 = _group_1_binding_0_fs.base_map_st;
@@ -606,30 +612,30 @@ void main() {
     vec3 n_3 = _e19.n;
     mat3x3 _e23 = weft_tangent_frame(n_3, in_3.world_tangent);
     vec3 _e25 = hair_strand(_e23, in_3.uv0_);
-    float _e27 = hair_jitter(in_3.uv0_);
-    vec3 _e28 = weft_main_light_direction();
-    vec3 _e29 = weft_main_light_radiance();
-    vec3 _e30 = weft_sh_irradiance(n_3);
-    float n_dot_l = dot(n_3, _e28);
+    float _e28 = hair_jitter(in_3.uv0_, in_3.jitter);
+    vec3 _e29 = weft_main_light_direction();
+    vec3 _e30 = weft_main_light_radiance();
+    vec3 _e31 = weft_sh_irradiance(n_3);
+    float n_dot_l = dot(n_3, _e29);
     {
-        vec3 _e35 = weft_safe_normalize((_e25 + (_e27 * n_3)), _e25);
-        vec3 _e38 = weft_hair_sigma_a_scaled(base, in_3.fibre.w);
-        WeftHair _e39 = hair_from_varyings(in_3, _e38);
-        WeftHairAngles _e40 = weft_hair_angles(_e35, v_3, _e28);
+        vec3 _e36 = weft_safe_normalize((_e25 + (_e28 * n_3)), _e25);
+        vec3 _e39 = weft_hair_sigma_a_scaled(base, in_3.fibre.w);
+        WeftHair _e40 = hair_from_varyings(in_3, _e39);
+        WeftHairAngles _e41 = weft_hair_angles(_e36, v_3, _e29);
         {
-            WeftHairLobes _e43 = weft_hair_mean(_e39, _e40, HAIR_REFERENCE_CELLS);
-            lobes = _e43;
+            WeftHairLobes _e44 = weft_hair_mean(_e40, _e41, HAIR_REFERENCE_CELLS);
+            lobes = _e44;
         }
         float body = smoothstep(-0.25, HAIR_TERMINATOR, n_dot_l);
-        vec3 _e50 = lobes.back;
-        vec3 multiple = (base * (vec3(1.0) - _e50));
-        vec3 _e54 = lobes.s;
-        vec3 direct = ((_e54 * body) + (multiple * (WEFT_INV_PI * clamp(n_dot_l, 0.0, 1.0))));
-        vec3 _e63 = lobes.back;
-        color = ((direct * _e29) + (_e30 * (multiple + _e63)));
+        vec3 _e51 = lobes.back;
+        vec3 multiple = (base * (vec3(1.0) - _e51));
+        vec3 _e55 = lobes.s;
+        vec3 direct = ((_e55 * body) + (multiple * (WEFT_INV_PI * clamp(n_dot_l, 0.0, 1.0))));
+        vec3 _e64 = lobes.back;
+        color = ((direct * _e30) + (_e31 * (multiple + _e64)));
     }
-    vec3 _e67 = color;
-    vec3 radiance = clamp(_e67, vec3(0.0), vec3(65504.0));
+    vec3 _e68 = color;
+    vec3 radiance = clamp(_e68, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

@@ -100,7 +100,8 @@ struct WeftHair {
     char _pad10[4];
     metal::float4 trt;
     float trt4_;
-    char _pad12[12];
+    float inv_eta;
+    char _pad13[8];
 };
 struct WeftHairAttenuation {
     float a0_;
@@ -133,6 +134,7 @@ struct HairVaryings {
     metal::float4 mp_norm;
     metal::float4 inv_v;
     metal::float4 trt;
+    metal::float4 jitter;
 };
 constant float WEFT_PI = 3.1415927;
 constant float WEFT_INV_PI = 0.31830987;
@@ -174,9 +176,10 @@ float weft_f_dielectric(
     float g = metal::sqrt(metal::max(g2_, 0.0));
     float gmc = g - c_1;
     float gpc = metal::max(g + c_1, 0.0000001);
-    float a_2 = gmc / gpc;
-    float b_1 = ((c_1 * gpc) - 1.0) / metal::max((c_1 * gmc) + 1.0, 0.0000001);
-    float f = metal::saturate(((0.5 * a_2) * a_2) * (1.0 + (b_1 * b_1)));
+    float b_den = metal::max((c_1 * gmc) + 1.0, 0.0000001);
+    float b_num = (c_1 * gpc) - 1.0;
+    float inv = 1.0 / (gpc * b_den);
+    float f = metal::saturate((((0.5 * gmc) * gmc) * ((b_den * b_den) + (b_num * b_num))) * (inv * inv));
     return (g2_ < 0.0) ? 1.0 : f;
 }
 
@@ -278,8 +281,8 @@ metal::float3x3 weft_tangent_frame(
     metal::float3 _e13 = weft_any_perpendicular(n_2);
     metal::float3 t_1 = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_7 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_2 = metal::cross(n_2, t_1) * s_7;
-    return metal::float3x3(t_1, b_2, n_2);
+    metal::float3 b_1 = metal::cross(n_2, t_1) * s_7;
+    return metal::float3x3(t_1, b_1, n_2);
 }
 
 metal::float2 weft_transform_uv(
@@ -304,22 +307,22 @@ float weft_hair_safe_sqrt(
 float weft_hair_variance(
     float beta_m
 ) {
-    float b_3 = metal::clamp(beta_m, WEFT_HAIR_MIN_BETA_M, 1.0);
-    float b2_ = b_3 * b_3;
+    float b_2 = metal::clamp(beta_m, WEFT_HAIR_MIN_BETA_M, 1.0);
+    float b2_ = b_2 * b_2;
     float b4_ = b2_ * b2_;
     float b20_ = (((b4_ * b4_) * b4_) * b4_) * b4_;
-    float _e18 = weft_hair_sqr(((0.726 * b_3) + (0.812 * b2_)) + (3.7 * b20_));
+    float _e18 = weft_hair_sqr(((0.726 * b_2) + (0.812 * b2_)) + (3.7 * b20_));
     return _e18;
 }
 
 float weft_hair_logistic_scale(
     float beta_n
 ) {
-    float b_4 = metal::clamp(beta_n, WEFT_HAIR_MIN_BETA_N, 1.0);
-    float b2_1 = b_4 * b_4;
+    float b_3 = metal::clamp(beta_n, WEFT_HAIR_MIN_BETA_N, 1.0);
+    float b2_1 = b_3 * b_3;
     float b4_1 = b2_1 * b2_1;
     float b22_ = ((((b4_1 * b4_1) * b4_1) * b4_1) * b4_1) * b2_1;
-    return 0.62665707 * (((0.265 * b_4) + (1.194 * b2_1)) + (5.372 * b22_));
+    return 0.62665707 * (((0.265 * b_3) + (1.194 * b2_1)) + (5.372 * b22_));
 }
 
 metal::float3 weft_hair_sigma_a_scaled(
@@ -333,8 +336,8 @@ metal::float3 weft_hair_sigma_a_scaled(
 float weft_hair_sigma_a_scale(
     float beta_n_1
 ) {
-    float b_5 = metal::clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1.0);
-    float d = ((((5.969 - (0.215 * b_5)) + ((2.532 * b_5) * b_5)) - (10.73 * metal::pow(b_5, 3.0))) + (5.574 * metal::pow(b_5, 4.0))) + (0.245 * metal::pow(b_5, 5.0));
+    float b_4 = metal::clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1.0);
+    float d = ((((5.969 - (0.215 * b_4)) + ((2.532 * b_4) * b_4)) - (10.73 * metal::pow(b_4, 3.0))) + (5.574 * metal::pow(b_4, 4.0))) + (0.245 * metal::pow(b_4, 5.0));
     return 1.0 / d;
 }
 
@@ -352,8 +355,8 @@ WeftHair weft_hair_params(
     hair.v = metal::float4(_e13, 0.25 * _e13, 4.0 * _e13, 4.0 * _e13);
     float _e23 = weft_hair_logistic_scale(beta_n_2);
     hair.s = _e23;
-    float a_3 = ((alpha_deg) * 0.017453292519943295474);
-    float s0_ = metal::sin(a_3);
+    float a_2 = ((alpha_deg) * 0.017453292519943295474);
+    float s0_ = metal::sin(a_2);
     float _e29 = weft_hair_safe_sqrt(1.0 - (s0_ * s0_));
     float s1_ = (2.0 * _e29) * s0_;
     float c1_ = (_e29 * _e29) - (s0_ * s0_);
@@ -377,8 +380,10 @@ WeftHair weft_hair_params(
     float sh_1 = hair.s;
     hair.trt = metal::float4(-9.2609 + (sh_1 * (65.993 - (107.38 * sh_1))), 72.357 + (sh_1 * (-624.68 + (1069.8 * sh_1))), -153.75 + (sh_1 * (1704.7 - (3127.5 * sh_1))), -67.745 + (sh_1 * (-1105.8 + (2706.6 * sh_1))));
     hair.trt4_ = 239.74 - (430.94 * sh_1);
-    WeftHair _e122 = hair;
-    return _e122;
+    float _e124 = hair.eta;
+    hair.inv_eta = 1.0 / _e124;
+    WeftHair _e127 = hair;
+    return _e127;
 }
 
 float weft_hair_i0_(
@@ -435,14 +440,14 @@ float weft_hair_mp(
     float sin_o,
     float v_1
 ) {
-    float a_4 = (cos_i_1 * cos_o) / v_1;
-    float b_6 = (sin_i * sin_o) / v_1;
+    float a_3 = (cos_i_1 * cos_o) / v_1;
+    float b_5 = (sin_i * sin_o) / v_1;
     if (v_1 <= 0.1) {
-        float _e11 = weft_hair_log_i0_(a_4);
-        return metal::exp((((_e11 - b_6) - (1.0 / v_1)) + 0.6931472) + metal::log(1.0 / (2.0 * v_1)));
+        float _e11 = weft_hair_log_i0_(a_3);
+        return metal::exp((((_e11 - b_5) - (1.0 / v_1)) + 0.6931472) + metal::log(1.0 / (2.0 * v_1)));
     }
-    float _e27 = weft_hair_i0_(a_4);
-    return (metal::exp(-(b_6)) * _e27) / ((metal::sinh(1.0 / v_1) * 2.0) * v_1);
+    float _e27 = weft_hair_i0_(a_3);
+    return (metal::exp(-(b_5)) * _e27) / ((metal::sinh(1.0 / v_1) * 2.0) * v_1);
 }
 
 metal::float4 weft_hair_longitudinal(
@@ -552,10 +557,10 @@ float weft_hair_trimmed_integral(
     float sum_1 = {};
     float _e4 = weft_hair_logistic_cdf(-3.1415927, s_3);
     float _e6 = weft_hair_logistic_cdf(WEFT_PI, s_3);
-    float a_5 = metal::clamp(lo, -3.1415927, WEFT_PI);
-    float b_7 = metal::clamp(hi, -3.1415927, WEFT_PI);
-    float _e13 = weft_hair_logistic_cdf(b_7, s_3);
-    float _e14 = weft_hair_logistic_cdf(a_5, s_3);
+    float a_4 = metal::clamp(lo, -3.1415927, WEFT_PI);
+    float b_6 = metal::clamp(hi, -3.1415927, WEFT_PI);
+    float _e13 = weft_hair_logistic_cdf(b_6, s_3);
+    float _e14 = weft_hair_logistic_cdf(a_4, s_3);
     sum_1 = _e13 - _e14;
     if (hi > WEFT_PI) {
         float _e19 = sum_1;
@@ -664,12 +669,18 @@ WeftHairLobes weft_hair_mean(
     return _e172;
 }
 
+float hair_noise_period(
+    float density
+) {
+    return metal::max(metal::rint(density), 1.0);
+}
+
 WeftHair hair_from_varyings(
     HairVaryings in_5,
     metal::float3 sigma_a_1
 ) {
     float v_2 = in_5.fibre.z;
-    return WeftHair {metal::max(sigma_a_1, metal::float3(0.0)), in_5.fibre.x, metal::float4(v_2, 0.25 * v_2, 4.0 * v_2, 4.0 * v_2), in_5.fibre.y, {}, in_5.sin2k.xyz, in_5.cos2k.xyz, in_5.inv_v.xyz, in_5.mp_norm.xyz, metal::float2(in_5.cos2k.w, in_5.mp_norm.w), in_5.sin2k.w, {}, metal::float4(in_5.inv_v.w, in_5.trt.xyz), in_5.trt.w};
+    return WeftHair {metal::max(sigma_a_1, metal::float3(0.0)), in_5.fibre.x, metal::float4(v_2, 0.25 * v_2, 4.0 * v_2, 4.0 * v_2), in_5.fibre.y, {}, in_5.sin2k.xyz, in_5.cos2k.xyz, in_5.inv_v.xyz, in_5.mp_norm.xyz, metal::float2(in_5.cos2k.w, in_5.mp_norm.w), in_5.sin2k.w, {}, metal::float4(in_5.inv_v.w, in_5.trt.xyz), in_5.trt.w, in_5.jitter.z};
 }
 
 metal::float3 hair_strand(
@@ -700,44 +711,41 @@ uint naga_f2u32(float value) {
 
 float hair_value_noise(
     float x_8,
-    float period
+    float p
 ) {
-    float p = metal::max(metal::rint(period), 1.0);
     float cell = metal::floor(x_8);
     float f_1 = x_8 - cell;
     float c0_ = cell - (p * metal::floor(cell / p));
     float c1_1 = ((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0);
-    float _e19 = hair_hash(naga_f2u32(c0_));
-    float _e21 = hair_hash(naga_f2u32(c1_1));
-    return metal::mix(_e19, _e21, (f_1 * f_1) * (3.0 - (2.0 * f_1))) - 0.5;
+    float _e16 = hair_hash(naga_f2u32(c0_));
+    float _e18 = hair_hash(naga_f2u32(c1_1));
+    return metal::mix(_e16, _e18, (f_1 * f_1) * (3.0 - (2.0 * f_1))) - 0.5;
 }
 
 float hair_jitter(
     metal::float2 uv0_1,
+    metal::float4 per_vertex,
     constant WeftMaterial& material,
     metal::sampler material_sampler,
     metal::texture2d<float, metal::access::sample> jitter_map,
     metal::texture2d<float, metal::access::sample> uv_rotate_mask
 ) {
-    metal::float4 _e3 = uv_rotate_mask.sample(material_sampler, uv0_1);
-    float mask = metal::step(0.8, _e3.x);
-    float _e9 = material.anisotropic_direction;
-    float a_6 = ((_e9) * 0.017453292519943295474);
-    float c_2 = metal::cos(a_6);
-    float s_8 = metal::sin(a_6);
+    metal::float4 _e4 = uv_rotate_mask.sample(material_sampler, uv0_1);
+    float mask = metal::step(0.8, _e4.x);
+    float c_2 = per_vertex.x;
+    float s_8 = per_vertex.y;
     metal::float2 rotated = metal::float2((c_2 * uv0_1.x) + (s_8 * uv0_1.y), (-(s_8) * uv0_1.x) + (c_2 * uv0_1.y));
-    metal::float4 _e30 = material.jitter_map_st;
-    metal::float2 _e31 = weft_transform_uv((mask > 0.5) ? rotated : uv0_1, _e30);
-    metal::float4 _e34 = jitter_map.sample(material_sampler, _e31);
-    float j = _e34.x;
-    uint _e40 = material.strand_along_tangent;
-    float across = (_e40 != 0u) ? _e31.y : _e31.x;
-    float _e46 = material.jitter_strength;
-    float _e50 = material.strand_noise;
-    float _e53 = material.strand_density;
-    float _e57 = material.strand_density;
-    float _e58 = hair_value_noise(across * _e53, _e57);
-    return (_e46 * j) + (_e50 * _e58);
+    metal::float4 _e27 = material.jitter_map_st;
+    metal::float2 _e28 = weft_transform_uv((mask > 0.5) ? rotated : uv0_1, _e27);
+    metal::float4 _e31 = jitter_map.sample(material_sampler, _e28);
+    float j = _e31.x;
+    uint _e37 = material.strand_along_tangent;
+    float across = (_e37 != 0u) ? _e28.y : _e28.x;
+    float _e43 = material.jitter_strength;
+    float _e47 = material.strand_noise;
+    float _e50 = material.strand_density;
+    float _e53 = hair_value_noise(across * _e50, per_vertex.w);
+    return (_e43 * j) + (_e47 * _e53);
 }
 
 struct vs_outlineInput {
@@ -876,6 +884,7 @@ struct vs_hairOutput {
     metal::float4 mp_norm [[user(loc7), flat]];
     metal::float4 inv_v [[user(loc8), flat]];
     metal::float4 trt [[user(loc9), flat]];
+    metal::float4 jitter [[user(loc10), flat]];
 };
 vertex vs_hairOutput vs_hair(
   vs_hairInput varyings_4 [[stage_in]]
@@ -898,22 +907,27 @@ vertex vs_hairOutput vs_hair(
         float _e23 = weft_hair_sigma_a_scale(_e22);
         scale = _e23;
     }
-    float _e30 = h.eta;
-    float _e32 = h.s;
-    float _e35 = h.v.x;
-    float _e36 = scale;
-    metal::float3 _e39 = h.sin2k;
-    float _e41 = h.r_floor;
-    metal::float3 _e44 = h.cos2k;
-    float _e47 = h.blur.x;
-    metal::float3 _e50 = h.mp_norm;
-    float _e53 = h.blur.y;
-    metal::float3 _e56 = h.inv_v;
-    float _e59 = h.trt.x;
-    metal::float4 _e62 = h.trt;
-    float _e65 = h.trt4_;
-    const auto _tmp_2 = HairVaryings {_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, {}, metal::float4(_e30, _e32, _e35, _e36), metal::float4(_e39, _e41), metal::float4(_e44, _e47), metal::float4(_e50, _e53), metal::float4(_e56, _e59), metal::float4(_e62.yzw, _e65)};
-    return vs_hairOutput { _tmp_2.clip_position, _tmp_2.world_position, _tmp_2.world_normal, _tmp_2.world_tangent, _tmp_2.uv0_, _tmp_2.fibre, _tmp_2.sin2k, _tmp_2.cos2k, _tmp_2.mp_norm, _tmp_2.inv_v, _tmp_2.trt };
+    float _e26 = material.anisotropic_direction;
+    float a_5 = ((_e26) * 0.017453292519943295474);
+    float _e34 = h.eta;
+    float _e36 = h.s;
+    float _e39 = h.v.x;
+    float _e40 = scale;
+    metal::float3 _e43 = h.sin2k;
+    float _e45 = h.r_floor;
+    metal::float3 _e48 = h.cos2k;
+    float _e51 = h.blur.x;
+    metal::float3 _e54 = h.mp_norm;
+    float _e57 = h.blur.y;
+    metal::float3 _e60 = h.inv_v;
+    float _e63 = h.trt.x;
+    metal::float4 _e66 = h.trt;
+    float _e69 = h.trt4_;
+    float _e74 = h.inv_eta;
+    float _e77 = material.strand_density;
+    float _e78 = hair_noise_period(_e77);
+    const auto _tmp_2 = HairVaryings {_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, {}, metal::float4(_e34, _e36, _e39, _e40), metal::float4(_e43, _e45), metal::float4(_e48, _e51), metal::float4(_e54, _e57), metal::float4(_e60, _e63), metal::float4(_e66.yzw, _e69), metal::float4(metal::cos(a_5), metal::sin(a_5), _e74, _e78)};
+    return vs_hairOutput { _tmp_2.clip_position, _tmp_2.world_position, _tmp_2.world_normal, _tmp_2.world_tangent, _tmp_2.uv0_, _tmp_2.fibre, _tmp_2.sin2k, _tmp_2.cos2k, _tmp_2.mp_norm, _tmp_2.inv_v, _tmp_2.trt, _tmp_2.jitter };
 }
 
 
@@ -928,6 +942,7 @@ struct fs_mainInput {
     metal::float4 mp_norm [[user(loc7), flat]];
     metal::float4 inv_v [[user(loc8), flat]];
     metal::float4 trt [[user(loc9), flat]];
+    metal::float4 jitter [[user(loc10), flat]];
 };
 struct fs_mainOutput {
     metal::float4 member_5 [[color(0)]];
@@ -942,7 +957,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> jitter_map [[texture(1)]]
 , metal::texture2d<float, metal::access::sample> uv_rotate_mask [[texture(2)]]
 ) {
-    const HairVaryings in_3 = { clip_position, varyings_5.world_position_2, varyings_5.world_normal_1, varyings_5.world_tangent, varyings_5.uv0_2, {}, varyings_5.fibre, varyings_5.sin2k, varyings_5.cos2k, varyings_5.mp_norm, varyings_5.inv_v, varyings_5.trt };
+    const HairVaryings in_3 = { clip_position, varyings_5.world_position_2, varyings_5.world_normal_1, varyings_5.world_tangent, varyings_5.uv0_2, {}, varyings_5.fibre, varyings_5.sin2k, varyings_5.cos2k, varyings_5.mp_norm, varyings_5.inv_v, varyings_5.trt, varyings_5.jitter };
     metal::float3 color = {};
     WeftHairLobes lobes = {};
     metal::float4 _e4 = material.base_map_st;
@@ -957,29 +972,29 @@ fragment fs_mainOutput fs_main(
     metal::float3 n_3 = _e19.n;
     metal::float3x3 _e23 = weft_tangent_frame(n_3, in_3.world_tangent);
     metal::float3 _e25 = hair_strand(_e23, in_3.uv0_, material);
-    float _e27 = hair_jitter(in_3.uv0_, material, material_sampler, jitter_map, uv_rotate_mask);
-    metal::float3 _e28 = weft_main_light_direction(weft_frame);
-    metal::float3 _e29 = weft_main_light_radiance(weft_frame);
-    metal::float3 _e30 = weft_sh_irradiance(n_3, weft_frame);
-    float n_dot_l = metal::dot(n_3, _e28);
+    float _e28 = hair_jitter(in_3.uv0_, in_3.jitter, material, material_sampler, jitter_map, uv_rotate_mask);
+    metal::float3 _e29 = weft_main_light_direction(weft_frame);
+    metal::float3 _e30 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e31 = weft_sh_irradiance(n_3, weft_frame);
+    float n_dot_l = metal::dot(n_3, _e29);
     {
-        metal::float3 _e35 = weft_safe_normalize(_e25 + (_e27 * n_3), _e25);
-        metal::float3 _e38 = weft_hair_sigma_a_scaled(base, in_3.fibre.w);
-        WeftHair _e39 = hair_from_varyings(in_3, _e38);
-        WeftHairAngles _e40 = weft_hair_angles(_e35, v_3, _e28);
+        metal::float3 _e36 = weft_safe_normalize(_e25 + (_e28 * n_3), _e25);
+        metal::float3 _e39 = weft_hair_sigma_a_scaled(base, in_3.fibre.w);
+        WeftHair _e40 = hair_from_varyings(in_3, _e39);
+        WeftHairAngles _e41 = weft_hair_angles(_e36, v_3, _e29);
         {
-            WeftHairLobes _e43 = weft_hair_mean(_e39, _e40, HAIR_REFERENCE_CELLS);
-            lobes = _e43;
+            WeftHairLobes _e44 = weft_hair_mean(_e40, _e41, HAIR_REFERENCE_CELLS);
+            lobes = _e44;
         }
         float body = metal::smoothstep(-0.25, HAIR_TERMINATOR, n_dot_l);
-        metal::float3 _e50 = lobes.back;
-        metal::float3 multiple = base * (metal::float3(1.0) - _e50);
-        metal::float3 _e54 = lobes.s;
-        metal::float3 direct = (_e54 * body) + (multiple * (WEFT_INV_PI * metal::saturate(n_dot_l)));
-        metal::float3 _e63 = lobes.back;
-        color = (direct * _e29) + (_e30 * (multiple + _e63));
+        metal::float3 _e51 = lobes.back;
+        metal::float3 multiple = base * (metal::float3(1.0) - _e51);
+        metal::float3 _e55 = lobes.s;
+        metal::float3 direct = (_e55 * body) + (multiple * (WEFT_INV_PI * metal::saturate(n_dot_l)));
+        metal::float3 _e64 = lobes.back;
+        color = (direct * _e30) + (_e31 * (multiple + _e64));
     }
-    metal::float3 _e67 = color;
-    metal::float3 radiance = metal::clamp(_e67, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e68 = color;
+    metal::float3 radiance = metal::clamp(_e68, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

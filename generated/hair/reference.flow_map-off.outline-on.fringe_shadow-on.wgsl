@@ -92,6 +92,7 @@ struct WeftHair {
     r_floor: f32,
     trt: vec4<f32>,
     trt4_: f32,
+    inv_eta: f32,
 }
 
 struct WeftHairAttenuation {
@@ -125,6 +126,7 @@ struct HairVaryings {
     @location(7) @interpolate(flat) mp_norm: vec4<f32>,
     @location(8) @interpolate(flat) inv_v: vec4<f32>,
     @location(9) @interpolate(flat) trt: vec4<f32>,
+    @location(10) @interpolate(flat) jitter: vec4<f32>,
 }
 
 const WEFT_PI: f32 = 3.1415927f;
@@ -174,9 +176,10 @@ fn weft_f_dielectric(cos_i: f32, eta: f32) -> f32 {
     let g = sqrt(max(g2_, 0f));
     let gmc = (g - c_1);
     let gpc = max((g + c_1), 0.0000001f);
-    let a_2 = (gmc / gpc);
-    let b_1 = (((c_1 * gpc) - 1f) / max(((c_1 * gmc) + 1f), 0.0000001f));
-    let f = saturate((((0.5f * a_2) * a_2) * (1f + (b_1 * b_1))));
+    let b_den = max(((c_1 * gmc) + 1f), 0.0000001f);
+    let b_num = ((c_1 * gpc) - 1f);
+    let inv = (1f / (gpc * b_den));
+    let f = saturate(((((0.5f * gmc) * gmc) * ((b_den * b_den) + (b_num * b_num))) * (inv * inv)));
     return select(f, 1f, (g2_ < 0f));
 }
 
@@ -258,8 +261,8 @@ fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let _e13 = weft_any_perpendicular(n_2);
     let t_1 = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_7 = select(1f, -1f, (tangent.w < 0f));
-    let b_2 = (cross(n_2, t_1) * s_7);
-    return mat3x3<f32>(t_1, b_2, n_2);
+    let b_1 = (cross(n_2, t_1) * s_7);
+    return mat3x3<f32>(t_1, b_1, n_2);
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -275,20 +278,20 @@ fn weft_hair_safe_sqrt(x_1: f32) -> f32 {
 }
 
 fn weft_hair_variance(beta_m: f32) -> f32 {
-    let b_3 = clamp(beta_m, WEFT_HAIR_MIN_BETA_M, 1f);
-    let b2_ = (b_3 * b_3);
+    let b_2 = clamp(beta_m, WEFT_HAIR_MIN_BETA_M, 1f);
+    let b2_ = (b_2 * b_2);
     let b4_ = (b2_ * b2_);
     let b20_ = ((((b4_ * b4_) * b4_) * b4_) * b4_);
-    let _e18 = weft_hair_sqr((((0.726f * b_3) + (0.812f * b2_)) + (3.7f * b20_)));
+    let _e18 = weft_hair_sqr((((0.726f * b_2) + (0.812f * b2_)) + (3.7f * b20_)));
     return _e18;
 }
 
 fn weft_hair_logistic_scale(beta_n: f32) -> f32 {
-    let b_4 = clamp(beta_n, WEFT_HAIR_MIN_BETA_N, 1f);
-    let b2_1 = (b_4 * b_4);
+    let b_3 = clamp(beta_n, WEFT_HAIR_MIN_BETA_N, 1f);
+    let b2_1 = (b_3 * b_3);
     let b4_1 = (b2_1 * b2_1);
     let b22_ = (((((b4_1 * b4_1) * b4_1) * b4_1) * b4_1) * b2_1);
-    return (0.62665707f * (((0.265f * b_4) + (1.194f * b2_1)) + (5.372f * b22_)));
+    return (0.62665707f * (((0.265f * b_3) + (1.194f * b2_1)) + (5.372f * b22_)));
 }
 
 fn weft_hair_sigma_a_scaled(c: vec3<f32>, scale_1: f32) -> vec3<f32> {
@@ -297,8 +300,8 @@ fn weft_hair_sigma_a_scaled(c: vec3<f32>, scale_1: f32) -> vec3<f32> {
 }
 
 fn weft_hair_sigma_a_scale(beta_n_1: f32) -> f32 {
-    let b_5 = clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1f);
-    let d = (((((5.969f - (0.215f * b_5)) + ((2.532f * b_5) * b_5)) - (10.73f * pow(b_5, 3f))) + (5.574f * pow(b_5, 4f))) + (0.245f * pow(b_5, 5f)));
+    let b_4 = clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1f);
+    let d = (((((5.969f - (0.215f * b_4)) + ((2.532f * b_4) * b_4)) - (10.73f * pow(b_4, 3f))) + (5.574f * pow(b_4, 4f))) + (0.245f * pow(b_4, 5f)));
     return (1f / d);
 }
 
@@ -311,8 +314,8 @@ fn weft_hair_params(sigma_a: vec3<f32>, eta_1: f32, beta_m_1: f32, beta_n_2: f32
     hair.v = vec4<f32>(_e13, (0.25f * _e13), (4f * _e13), (4f * _e13));
     let _e23 = weft_hair_logistic_scale(beta_n_2);
     hair.s = _e23;
-    let a_3 = radians(alpha_deg);
-    let s0_ = sin(a_3);
+    let a_2 = radians(alpha_deg);
+    let s0_ = sin(a_2);
     let _e29 = weft_hair_safe_sqrt((1f - (s0_ * s0_)));
     let s1_ = ((2f * _e29) * s0_);
     let c1_ = ((_e29 * _e29) - (s0_ * s0_));
@@ -336,8 +339,10 @@ fn weft_hair_params(sigma_a: vec3<f32>, eta_1: f32, beta_m_1: f32, beta_n_2: f32
     let sh_1 = hair.s;
     hair.trt = vec4<f32>((-9.2609f + (sh_1 * (65.993f - (107.38f * sh_1)))), (72.357f + (sh_1 * (-624.68f + (1069.8f * sh_1)))), (-153.75f + (sh_1 * (1704.7f - (3127.5f * sh_1)))), (-67.745f + (sh_1 * (-1105.8f + (2706.6f * sh_1)))));
     hair.trt4_ = (239.74f - (430.94f * sh_1));
-    let _e122 = hair;
-    return _e122;
+    let _e124 = hair.eta;
+    hair.inv_eta = (1f / _e124);
+    let _e127 = hair;
+    return _e127;
 }
 
 fn weft_hair_i0_(x_2: f32) -> f32 {
@@ -380,14 +385,14 @@ fn weft_hair_log_i0_(x_3: f32) -> f32 {
 }
 
 fn weft_hair_mp(cos_i_1: f32, cos_o: f32, sin_i: f32, sin_o: f32, v_1: f32) -> f32 {
-    let a_4 = ((cos_i_1 * cos_o) / v_1);
-    let b_6 = ((sin_i * sin_o) / v_1);
+    let a_3 = ((cos_i_1 * cos_o) / v_1);
+    let b_5 = ((sin_i * sin_o) / v_1);
     if (v_1 <= 0.1f) {
-        let _e11 = weft_hair_log_i0_(a_4);
-        return exp(((((_e11 - b_6) - (1f / v_1)) + 0.6931472f) + log((1f / (2f * v_1)))));
+        let _e11 = weft_hair_log_i0_(a_3);
+        return exp(((((_e11 - b_5) - (1f / v_1)) + 0.6931472f) + log((1f / (2f * v_1)))));
     }
-    let _e27 = weft_hair_i0_(a_4);
-    return ((exp(-(b_6)) * _e27) / ((sinh((1f / v_1)) * 2f) * v_1));
+    let _e27 = weft_hair_i0_(a_3);
+    return ((exp(-(b_5)) * _e27) / ((sinh((1f / v_1)) * 2f) * v_1));
 }
 
 fn weft_hair_longitudinal(hair_1: WeftHair, sin_o_1: f32, cos_o_1: f32, sin_i_1: f32, cos_i_2: f32) -> vec4<f32> {
@@ -468,10 +473,10 @@ fn weft_hair_trimmed_integral(lo: f32, hi: f32, s_3: f32) -> f32 {
 
     let _e4 = weft_hair_logistic_cdf(-3.1415927f, s_3);
     let _e6 = weft_hair_logistic_cdf(WEFT_PI, s_3);
-    let a_5 = clamp(lo, -3.1415927f, WEFT_PI);
-    let b_7 = clamp(hi, -3.1415927f, WEFT_PI);
-    let _e13 = weft_hair_logistic_cdf(b_7, s_3);
-    let _e14 = weft_hair_logistic_cdf(a_5, s_3);
+    let a_4 = clamp(lo, -3.1415927f, WEFT_PI);
+    let b_6 = clamp(hi, -3.1415927f, WEFT_PI);
+    let _e13 = weft_hair_logistic_cdf(b_6, s_3);
+    let _e14 = weft_hair_logistic_cdf(a_4, s_3);
     sum_1 = (_e13 - _e14);
     if (hi > WEFT_PI) {
         let _e19 = sum_1;
@@ -568,9 +573,13 @@ fn weft_hair_mean(hair_4: WeftHair, angles: WeftHairAngles, count: u32) -> WeftH
     return _e172;
 }
 
+fn hair_noise_period(density: f32) -> f32 {
+    return max(round(density), 1f);
+}
+
 fn hair_from_varyings(in_5: HairVaryings, sigma_a_1: vec3<f32>) -> WeftHair {
     let v_2 = in_5.fibre.z;
-    return WeftHair(max(sigma_a_1, vec3(0f)), in_5.fibre.x, vec4<f32>(v_2, (0.25f * v_2), (4f * v_2), (4f * v_2)), in_5.fibre.y, in_5.sin2k.xyz, in_5.cos2k.xyz, in_5.inv_v.xyz, in_5.mp_norm.xyz, vec2<f32>(in_5.cos2k.w, in_5.mp_norm.w), in_5.sin2k.w, vec4<f32>(in_5.inv_v.w, in_5.trt.xyz), in_5.trt.w);
+    return WeftHair(max(sigma_a_1, vec3(0f)), in_5.fibre.x, vec4<f32>(v_2, (0.25f * v_2), (4f * v_2), (4f * v_2)), in_5.fibre.y, in_5.sin2k.xyz, in_5.cos2k.xyz, in_5.inv_v.xyz, in_5.mp_norm.xyz, vec2<f32>(in_5.cos2k.w, in_5.mp_norm.w), in_5.sin2k.w, vec4<f32>(in_5.inv_v.w, in_5.trt.xyz), in_5.trt.w, in_5.jitter.z);
 }
 
 fn hair_strand(frame: mat3x3<f32>, uv0_: vec2<f32>) -> vec3<f32> {
@@ -590,37 +599,33 @@ fn hair_hash(x_7: u32) -> f32 {
     return (f32(((word >> 22u) ^ word)) * 0.00000000023283064f);
 }
 
-fn hair_value_noise(x_8: f32, period: f32) -> f32 {
-    let p = max(round(period), 1f);
+fn hair_value_noise(x_8: f32, p: f32) -> f32 {
     let cell = floor(x_8);
     let f_1 = (x_8 - cell);
     let c0_ = (cell - (p * floor((cell / p))));
     let c1_1 = select((c0_ + 1f), 0f, ((c0_ + 1f) >= p));
-    let _e19 = hair_hash(u32(c0_));
-    let _e21 = hair_hash(u32(c1_1));
-    return (mix(_e19, _e21, ((f_1 * f_1) * (3f - (2f * f_1)))) - 0.5f);
+    let _e16 = hair_hash(u32(c0_));
+    let _e18 = hair_hash(u32(c1_1));
+    return (mix(_e16, _e18, ((f_1 * f_1) * (3f - (2f * f_1)))) - 0.5f);
 }
 
-fn hair_jitter(uv0_1: vec2<f32>) -> f32 {
-    let _e3 = textureSample(uv_rotate_mask, material_sampler, uv0_1);
-    let mask = step(0.8f, _e3.x);
-    let _e9 = material.anisotropic_direction;
-    let a_6 = radians(_e9);
-    let c_2 = cos(a_6);
-    let s_8 = sin(a_6);
+fn hair_jitter(uv0_1: vec2<f32>, per_vertex: vec4<f32>) -> f32 {
+    let _e4 = textureSample(uv_rotate_mask, material_sampler, uv0_1);
+    let mask = step(0.8f, _e4.x);
+    let c_2 = per_vertex.x;
+    let s_8 = per_vertex.y;
     let rotated = vec2<f32>(((c_2 * uv0_1.x) + (s_8 * uv0_1.y)), ((-(s_8) * uv0_1.x) + (c_2 * uv0_1.y)));
-    let _e30 = material.jitter_map_st;
-    let _e31 = weft_transform_uv(select(uv0_1, rotated, (mask > 0.5f)), _e30);
-    let _e34 = textureSample(jitter_map, material_sampler, _e31);
-    let j = _e34.x;
-    let _e40 = material.strand_along_tangent;
-    let across = select(_e31.x, _e31.y, (_e40 != 0u));
-    let _e46 = material.jitter_strength;
-    let _e50 = material.strand_noise;
-    let _e53 = material.strand_density;
-    let _e57 = material.strand_density;
-    let _e58 = hair_value_noise((across * _e53), _e57);
-    return ((_e46 * j) + (_e50 * _e58));
+    let _e27 = material.jitter_map_st;
+    let _e28 = weft_transform_uv(select(uv0_1, rotated, (mask > 0.5f)), _e27);
+    let _e31 = textureSample(jitter_map, material_sampler, _e28);
+    let j = _e31.x;
+    let _e37 = material.strand_along_tangent;
+    let across = select(_e28.x, _e28.y, (_e37 != 0u));
+    let _e43 = material.jitter_strength;
+    let _e47 = material.strand_noise;
+    let _e50 = material.strand_density;
+    let _e53 = hair_value_noise((across * _e50), per_vertex.w);
+    return ((_e43 * j) + (_e47 * _e53));
 }
 
 @vertex 
@@ -723,21 +728,26 @@ fn vs_hair(in_2: WeftVertexInput) -> HairVaryings {
         let _e23 = weft_hair_sigma_a_scale(_e22);
         scale = _e23;
     }
-    let _e30 = h.eta;
-    let _e32 = h.s;
-    let _e35 = h.v.x;
-    let _e36 = scale;
-    let _e39 = h.sin2k;
-    let _e41 = h.r_floor;
-    let _e44 = h.cos2k;
-    let _e47 = h.blur.x;
-    let _e50 = h.mp_norm;
-    let _e53 = h.blur.y;
-    let _e56 = h.inv_v;
-    let _e59 = h.trt.x;
-    let _e62 = h.trt;
-    let _e65 = h.trt4_;
-    return HairVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, vec4<f32>(_e30, _e32, _e35, _e36), vec4<f32>(_e39, _e41), vec4<f32>(_e44, _e47), vec4<f32>(_e50, _e53), vec4<f32>(_e56, _e59), vec4<f32>(_e62.yzw, _e65));
+    let _e26 = material.anisotropic_direction;
+    let a_5 = radians(_e26);
+    let _e34 = h.eta;
+    let _e36 = h.s;
+    let _e39 = h.v.x;
+    let _e40 = scale;
+    let _e43 = h.sin2k;
+    let _e45 = h.r_floor;
+    let _e48 = h.cos2k;
+    let _e51 = h.blur.x;
+    let _e54 = h.mp_norm;
+    let _e57 = h.blur.y;
+    let _e60 = h.inv_v;
+    let _e63 = h.trt.x;
+    let _e66 = h.trt;
+    let _e69 = h.trt4_;
+    let _e74 = h.inv_eta;
+    let _e77 = material.strand_density;
+    let _e78 = hair_noise_period(_e77);
+    return HairVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, vec4<f32>(_e34, _e36, _e39, _e40), vec4<f32>(_e43, _e45), vec4<f32>(_e48, _e51), vec4<f32>(_e54, _e57), vec4<f32>(_e60, _e63), vec4<f32>(_e66.yzw, _e69), vec4<f32>(cos(a_5), sin(a_5), _e74, _e78));
 }
 
 @fragment 
@@ -757,29 +767,29 @@ fn fs_main(in_3: HairVaryings) -> @location(0) vec4<f32> {
     let n_3 = _e19.n;
     let _e23 = weft_tangent_frame(n_3, in_3.world_tangent);
     let _e25 = hair_strand(_e23, in_3.uv0_);
-    let _e27 = hair_jitter(in_3.uv0_);
-    let _e28 = weft_main_light_direction();
-    let _e29 = weft_main_light_radiance();
-    let _e30 = weft_sh_irradiance(n_3);
-    let n_dot_l = dot(n_3, _e28);
+    let _e28 = hair_jitter(in_3.uv0_, in_3.jitter);
+    let _e29 = weft_main_light_direction();
+    let _e30 = weft_main_light_radiance();
+    let _e31 = weft_sh_irradiance(n_3);
+    let n_dot_l = dot(n_3, _e29);
     {
-        let _e35 = weft_safe_normalize((_e25 + (_e27 * n_3)), _e25);
-        let _e38 = weft_hair_sigma_a_scaled(base, in_3.fibre.w);
-        let _e39 = hair_from_varyings(in_3, _e38);
-        let _e40 = weft_hair_angles(_e35, v_3, _e28);
+        let _e36 = weft_safe_normalize((_e25 + (_e28 * n_3)), _e25);
+        let _e39 = weft_hair_sigma_a_scaled(base, in_3.fibre.w);
+        let _e40 = hair_from_varyings(in_3, _e39);
+        let _e41 = weft_hair_angles(_e36, v_3, _e29);
         {
-            let _e43 = weft_hair_mean(_e39, _e40, HAIR_REFERENCE_CELLS);
-            lobes = _e43;
+            let _e44 = weft_hair_mean(_e40, _e41, HAIR_REFERENCE_CELLS);
+            lobes = _e44;
         }
         let body = smoothstep(-0.25f, HAIR_TERMINATOR, n_dot_l);
-        let _e50 = lobes.back;
-        let multiple = (base * (vec3(1f) - _e50));
-        let _e54 = lobes.s;
-        let direct = ((_e54 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
-        let _e63 = lobes.back;
-        color = ((direct * _e29) + (_e30 * (multiple + _e63)));
+        let _e51 = lobes.back;
+        let multiple = (base * (vec3(1f) - _e51));
+        let _e55 = lobes.s;
+        let direct = ((_e55 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
+        let _e64 = lobes.back;
+        color = ((direct * _e30) + (_e31 * (multiple + _e64)));
     }
-    let _e67 = color;
-    let radiance = clamp(_e67, vec3(0f), vec3(65504f));
+    let _e68 = color;
+    let radiance = clamp(_e68, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

@@ -77,6 +77,7 @@ struct WeftHair {
     float r_floor;
     vec4 trt;
     float trt4_;
+    float inv_eta;
 };
 struct WeftHairAttenuation {
     float a0_;
@@ -106,6 +107,7 @@ struct HairVaryings {
     vec4 mp_norm;
     vec4 inv_v;
     vec4 trt;
+    vec4 jitter;
 };
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
@@ -141,6 +143,7 @@ layout(location = 6) flat out vec4 _vs2fs_location6;
 layout(location = 7) flat out vec4 _vs2fs_location7;
 layout(location = 8) flat out vec4 _vs2fs_location8;
 layout(location = 9) flat out vec4 _vs2fs_location9;
+layout(location = 10) flat out vec4 _vs2fs_location10;
 
 vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
     float len2_ = dot(v, v);
@@ -160,9 +163,10 @@ float weft_f_dielectric(float cos_i, float eta) {
     float g = sqrt(max(g2_, 0.0));
     float gmc = (g - c_1);
     float gpc = max((g + c_1), 1e-7);
-    float a_2 = (gmc / gpc);
-    float b_1 = (((c_1 * gpc) - 1.0) / max(((c_1 * gmc) + 1.0), 1e-7));
-    float f = clamp((((0.5 * a_2) * a_2) * (1.0 + (b_1 * b_1))), 0.0, 1.0);
+    float b_den = max(((c_1 * gmc) + 1.0), 1e-7);
+    float b_num = ((c_1 * gpc) - 1.0);
+    float inv = (1.0 / (gpc * b_den));
+    float f = clamp(((((0.5 * gmc) * gmc) * ((b_den * b_den) + (b_num * b_num))) * (inv * inv)), 0.0, 1.0);
     return ((g2_ < 0.0) ? 1.0 : f);
 }
 
@@ -242,8 +246,8 @@ mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
     vec3 _e13 = weft_any_perpendicular(n_2);
     vec3 t_1 = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_7 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_2 = (cross(n_2, t_1) * s_7);
-    return mat3x3(t_1, b_2, n_2);
+    vec3 b_1 = (cross(n_2, t_1) * s_7);
+    return mat3x3(t_1, b_1, n_2);
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
@@ -259,20 +263,20 @@ float weft_hair_safe_sqrt(float x_1) {
 }
 
 float weft_hair_variance(float beta_m) {
-    float b_3 = clamp(beta_m, WEFT_HAIR_MIN_BETA_M, 1.0);
-    float b2_ = (b_3 * b_3);
+    float b_2 = clamp(beta_m, WEFT_HAIR_MIN_BETA_M, 1.0);
+    float b2_ = (b_2 * b_2);
     float b4_ = (b2_ * b2_);
     float b20_ = ((((b4_ * b4_) * b4_) * b4_) * b4_);
-    float _e18 = weft_hair_sqr((((0.726 * b_3) + (0.812 * b2_)) + (3.7 * b20_)));
+    float _e18 = weft_hair_sqr((((0.726 * b_2) + (0.812 * b2_)) + (3.7 * b20_)));
     return _e18;
 }
 
 float weft_hair_logistic_scale(float beta_n) {
-    float b_4 = clamp(beta_n, WEFT_HAIR_MIN_BETA_N, 1.0);
-    float b2_1 = (b_4 * b_4);
+    float b_3 = clamp(beta_n, WEFT_HAIR_MIN_BETA_N, 1.0);
+    float b2_1 = (b_3 * b_3);
     float b4_1 = (b2_1 * b2_1);
     float b22_ = (((((b4_1 * b4_1) * b4_1) * b4_1) * b4_1) * b2_1);
-    return (0.62665707 * (((0.265 * b_4) + (1.194 * b2_1)) + (5.372 * b22_)));
+    return (0.62665707 * (((0.265 * b_3) + (1.194 * b2_1)) + (5.372 * b22_)));
 }
 
 vec3 weft_hair_sigma_a_scaled(vec3 c, float scale_1) {
@@ -281,21 +285,21 @@ vec3 weft_hair_sigma_a_scaled(vec3 c, float scale_1) {
 }
 
 float weft_hair_sigma_a_scale(float beta_n_1) {
-    float b_5 = clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1.0);
-    float d = (((((5.969 - (0.215 * b_5)) + ((2.532 * b_5) * b_5)) - (10.73 * pow(b_5, 3.0))) + (5.574 * pow(b_5, 4.0))) + (0.245 * pow(b_5, 5.0)));
+    float b_4 = clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1.0);
+    float d = (((((5.969 - (0.215 * b_4)) + ((2.532 * b_4) * b_4)) - (10.73 * pow(b_4, 3.0))) + (5.574 * pow(b_4, 4.0))) + (0.245 * pow(b_4, 5.0)));
     return (1.0 / d);
 }
 
 WeftHair weft_hair_params(vec3 sigma_a, float eta_1, float beta_m_1, float beta_n_2, float alpha_deg) {
-    WeftHair hair = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0, vec4(0.0), 0.0);
+    WeftHair hair = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0, vec4(0.0), 0.0, 0.0);
     hair.sigma_a = max(sigma_a, vec3(0.0));
     hair.eta = max(eta_1, 1.0001);
     float _e13 = weft_hair_variance(beta_m_1);
     hair.v = vec4(_e13, (0.25 * _e13), (4.0 * _e13), (4.0 * _e13));
     float _e23 = weft_hair_logistic_scale(beta_n_2);
     hair.s = _e23;
-    float a_3 = radians(alpha_deg);
-    float s0_ = sin(a_3);
+    float a_2 = radians(alpha_deg);
+    float s0_ = sin(a_2);
     float _e29 = weft_hair_safe_sqrt((1.0 - (s0_ * s0_)));
     float s1_ = ((2.0 * _e29) * s0_);
     float c1_ = ((_e29 * _e29) - (s0_ * s0_));
@@ -319,8 +323,10 @@ WeftHair weft_hair_params(vec3 sigma_a, float eta_1, float beta_m_1, float beta_
     float sh_1 = hair.s;
     hair.trt = vec4((-9.2609 + (sh_1 * (65.993 - (107.38 * sh_1)))), (72.357 + (sh_1 * (-624.68 + (1069.8 * sh_1)))), (-153.75 + (sh_1 * (1704.7 - (3127.5 * sh_1)))), (-67.745 + (sh_1 * (-1105.8 + (2706.6 * sh_1)))));
     hair.trt4_ = (239.74 - (430.94 * sh_1));
-    WeftHair _e122 = hair;
-    return _e122;
+    float _e124 = hair.eta;
+    hair.inv_eta = (1.0 / _e124);
+    WeftHair _e127 = hair;
+    return _e127;
 }
 
 float weft_hair_i0_(float x_2) {
@@ -364,14 +370,14 @@ float weft_hair_log_i0_(float x_3) {
 }
 
 float weft_hair_mp(float cos_i_1, float cos_o, float sin_i, float sin_o, float v_1) {
-    float a_4 = ((cos_i_1 * cos_o) / v_1);
-    float b_6 = ((sin_i * sin_o) / v_1);
+    float a_3 = ((cos_i_1 * cos_o) / v_1);
+    float b_5 = ((sin_i * sin_o) / v_1);
     if ((v_1 <= 0.1)) {
-        float _e11 = weft_hair_log_i0_(a_4);
-        return exp(((((_e11 - b_6) - (1.0 / v_1)) + 0.6931472) + log((1.0 / (2.0 * v_1)))));
+        float _e11 = weft_hair_log_i0_(a_3);
+        return exp(((((_e11 - b_5) - (1.0 / v_1)) + 0.6931472) + log((1.0 / (2.0 * v_1)))));
     }
-    float _e27 = weft_hair_i0_(a_4);
-    return ((exp(-(b_6)) * _e27) / ((sinh((1.0 / v_1)) * 2.0) * v_1));
+    float _e27 = weft_hair_i0_(a_3);
+    return ((exp(-(b_5)) * _e27) / ((sinh((1.0 / v_1)) * 2.0) * v_1));
 }
 
 vec4 weft_hair_longitudinal(WeftHair hair_1, float sin_o_1, float cos_o_1, float sin_i_1, float cos_i_2) {
@@ -449,10 +455,10 @@ float weft_hair_trimmed_integral(float lo, float hi, float s_3) {
     float sum_1 = 0.0;
     float _e4 = weft_hair_logistic_cdf(-3.1415927, s_3);
     float _e6 = weft_hair_logistic_cdf(WEFT_PI, s_3);
-    float a_5 = clamp(lo, -3.1415927, WEFT_PI);
-    float b_7 = clamp(hi, -3.1415927, WEFT_PI);
-    float _e13 = weft_hair_logistic_cdf(b_7, s_3);
-    float _e14 = weft_hair_logistic_cdf(a_5, s_3);
+    float a_4 = clamp(lo, -3.1415927, WEFT_PI);
+    float b_6 = clamp(hi, -3.1415927, WEFT_PI);
+    float _e13 = weft_hair_logistic_cdf(b_6, s_3);
+    float _e14 = weft_hair_logistic_cdf(a_4, s_3);
     sum_1 = (_e13 - _e14);
     if ((hi > WEFT_PI)) {
         float _e19 = sum_1;
@@ -550,9 +556,13 @@ WeftHairLobes weft_hair_mean(WeftHair hair_4, WeftHairAngles angles, uint count)
     return _e172;
 }
 
+float hair_noise_period(float density) {
+    return max(roundEven(density), 1.0);
+}
+
 WeftHair hair_from_varyings(HairVaryings in_4, vec3 sigma_a_1) {
     float v_2 = in_4.fibre.z;
-    return WeftHair(max(sigma_a_1, vec3(0.0)), in_4.fibre.x, vec4(v_2, (0.25 * v_2), (4.0 * v_2), (4.0 * v_2)), in_4.fibre.y, in_4.sin2k.xyz, in_4.cos2k.xyz, in_4.inv_v.xyz, in_4.mp_norm.xyz, vec2(in_4.cos2k.w, in_4.mp_norm.w), in_4.sin2k.w, vec4(in_4.inv_v.w, in_4.trt.xyz), in_4.trt.w);
+    return WeftHair(max(sigma_a_1, vec3(0.0)), in_4.fibre.x, vec4(v_2, (0.25 * v_2), (4.0 * v_2), (4.0 * v_2)), in_4.fibre.y, in_4.sin2k.xyz, in_4.cos2k.xyz, in_4.inv_v.xyz, in_4.mp_norm.xyz, vec2(in_4.cos2k.w, in_4.mp_norm.w), in_4.sin2k.w, vec4(in_4.inv_v.w, in_4.trt.xyz), in_4.trt.w, in_4.jitter.z);
 }
 
 float hair_hash(uint x_7) {
@@ -561,20 +571,19 @@ float hair_hash(uint x_7) {
     return (float(((word >> 22u) ^ word)) * 2.3283064e-10);
 }
 
-float hair_value_noise(float x_8, float period) {
-    float p = max(roundEven(period), 1.0);
+float hair_value_noise(float x_8, float p) {
     float cell = floor(x_8);
     float f_1 = (x_8 - cell);
     float c0_ = (cell - (p * floor((cell / p))));
     float c1_1 = (((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0));
-    float _e19 = hair_hash(uint(c0_));
-    float _e21 = hair_hash(uint(c1_1));
-    return (mix(_e19, _e21, ((f_1 * f_1) * (3.0 - (2.0 * f_1)))) - 0.5);
+    float _e16 = hair_hash(uint(c0_));
+    float _e18 = hair_hash(uint(c1_1));
+    return (mix(_e16, _e18, ((f_1 * f_1) * (3.0 - (2.0 * f_1)))) - 0.5);
 }
 
 void main() {
     WeftVertexInput in_1 = WeftVertexInput(_p2vs_location0, _p2vs_location1, _p2vs_location2, _p2vs_location3);
-    WeftHair h = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0, vec4(0.0), 0.0);
+    WeftHair h = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0, vec4(0.0), 0.0, 0.0);
     float scale = 0.0;
     WeftVaryings _e1 = weft_forward_vertex(in_1);
     float _e6 = _group_1_binding_0_vs.ior;
@@ -588,21 +597,26 @@ void main() {
         float _e23 = weft_hair_sigma_a_scale(_e22);
         scale = _e23;
     }
-    float _e30 = h.eta;
-    float _e32 = h.s;
-    float _e35 = h.v.x;
-    float _e36 = scale;
-    vec3 _e39 = h.sin2k;
-    float _e41 = h.r_floor;
-    vec3 _e44 = h.cos2k;
-    float _e47 = h.blur.x;
-    vec3 _e50 = h.mp_norm;
-    float _e53 = h.blur.y;
-    vec3 _e56 = h.inv_v;
-    float _e59 = h.trt.x;
-    vec4 _e62 = h.trt;
-    float _e65 = h.trt4_;
-    HairVaryings _tmp_return = HairVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, vec4(_e30, _e32, _e35, _e36), vec4(_e39, _e41), vec4(_e44, _e47), vec4(_e50, _e53), vec4(_e56, _e59), vec4(_e62.yzw, _e65));
+    float _e26 = _group_1_binding_0_vs.anisotropic_direction;
+    float a_5 = radians(_e26);
+    float _e34 = h.eta;
+    float _e36 = h.s;
+    float _e39 = h.v.x;
+    float _e40 = scale;
+    vec3 _e43 = h.sin2k;
+    float _e45 = h.r_floor;
+    vec3 _e48 = h.cos2k;
+    float _e51 = h.blur.x;
+    vec3 _e54 = h.mp_norm;
+    float _e57 = h.blur.y;
+    vec3 _e60 = h.inv_v;
+    float _e63 = h.trt.x;
+    vec4 _e66 = h.trt;
+    float _e69 = h.trt4_;
+    float _e74 = h.inv_eta;
+    float _e77 = _group_1_binding_0_vs.strand_density;
+    float _e78 = hair_noise_period(_e77);
+    HairVaryings _tmp_return = HairVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, vec4(_e34, _e36, _e39, _e40), vec4(_e43, _e45), vec4(_e48, _e51), vec4(_e54, _e57), vec4(_e60, _e63), vec4(_e66.yzw, _e69), vec4(cos(a_5), sin(a_5), _e74, _e78));
     gl_Position = _tmp_return.clip_position;
     _vs2fs_location0 = _tmp_return.world_position;
     _vs2fs_location1 = _tmp_return.world_normal;
@@ -614,6 +628,7 @@ void main() {
     _vs2fs_location7 = _tmp_return.mp_norm;
     _vs2fs_location8 = _tmp_return.inv_v;
     _vs2fs_location9 = _tmp_return.trt;
+    _vs2fs_location10 = _tmp_return.jitter;
     gl_Position.yz = vec2(-gl_Position.y, gl_Position.z * 2.0 - gl_Position.w);
     return;
 }

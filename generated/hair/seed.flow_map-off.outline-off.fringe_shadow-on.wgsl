@@ -83,6 +83,7 @@ struct WeftHair {
     r_floor: f32,
     trt: vec4<f32>,
     trt4_: f32,
+    inv_eta: f32,
 }
 
 struct WeftHairLobes {
@@ -103,6 +104,7 @@ struct HairVaryings {
     @location(7) @interpolate(flat) mp_norm: vec4<f32>,
     @location(8) @interpolate(flat) inv_v: vec4<f32>,
     @location(9) @interpolate(flat) trt: vec4<f32>,
+    @location(10) @interpolate(flat) jitter: vec4<f32>,
 }
 
 const WEFT_PI: f32 = 3.1415927f;
@@ -291,8 +293,14 @@ fn weft_hair_params(sigma_a: vec3<f32>, eta: f32, beta_m_1: f32, beta_n_1: f32, 
     let sh_1 = hair.s;
     hair.trt = vec4<f32>((-9.2609f + (sh_1 * (65.993f - (107.38f * sh_1)))), (72.357f + (sh_1 * (-624.68f + (1069.8f * sh_1)))), (-153.75f + (sh_1 * (1704.7f - (3127.5f * sh_1)))), (-67.745f + (sh_1 * (-1105.8f + (2706.6f * sh_1)))));
     hair.trt4_ = (239.74f - (430.94f * sh_1));
-    let _e122 = hair;
-    return _e122;
+    let _e124 = hair.eta;
+    hair.inv_eta = (1f / _e124);
+    let _e127 = hair;
+    return _e127;
+}
+
+fn hair_noise_period(density: f32) -> f32 {
+    return max(round(density), 1f);
 }
 
 fn hair_strand(frame: mat3x3<f32>, uv0_: vec2<f32>) -> vec3<f32> {
@@ -312,37 +320,33 @@ fn hair_hash(x_2: u32) -> f32 {
     return (f32(((word >> 22u) ^ word)) * 0.00000000023283064f);
 }
 
-fn hair_value_noise(x_3: f32, period: f32) -> f32 {
-    let p = max(round(period), 1f);
+fn hair_value_noise(x_3: f32, p: f32) -> f32 {
     let cell = floor(x_3);
     let f = (x_3 - cell);
     let c0_ = (cell - (p * floor((cell / p))));
     let c1_1 = select((c0_ + 1f), 0f, ((c0_ + 1f) >= p));
-    let _e19 = hair_hash(u32(c0_));
-    let _e21 = hair_hash(u32(c1_1));
-    return (mix(_e19, _e21, ((f * f) * (3f - (2f * f)))) - 0.5f);
+    let _e16 = hair_hash(u32(c0_));
+    let _e18 = hair_hash(u32(c1_1));
+    return (mix(_e16, _e18, ((f * f) * (3f - (2f * f)))) - 0.5f);
 }
 
-fn hair_jitter(uv0_1: vec2<f32>) -> f32 {
-    let _e3 = textureSample(uv_rotate_mask, material_sampler, uv0_1);
-    let mask = step(0.8f, _e3.x);
-    let _e9 = material.anisotropic_direction;
-    let a_2 = radians(_e9);
-    let c = cos(a_2);
-    let s_2 = sin(a_2);
+fn hair_jitter(uv0_1: vec2<f32>, per_vertex: vec4<f32>) -> f32 {
+    let _e4 = textureSample(uv_rotate_mask, material_sampler, uv0_1);
+    let mask = step(0.8f, _e4.x);
+    let c = per_vertex.x;
+    let s_2 = per_vertex.y;
     let rotated = vec2<f32>(((c * uv0_1.x) + (s_2 * uv0_1.y)), ((-(s_2) * uv0_1.x) + (c * uv0_1.y)));
-    let _e30 = material.jitter_map_st;
-    let _e31 = weft_transform_uv(select(uv0_1, rotated, (mask > 0.5f)), _e30);
-    let _e34 = textureSample(jitter_map, material_sampler, _e31);
-    let j = _e34.x;
-    let _e40 = material.strand_along_tangent;
-    let across = select(_e31.x, _e31.y, (_e40 != 0u));
-    let _e46 = material.jitter_strength;
-    let _e50 = material.strand_noise;
-    let _e53 = material.strand_density;
-    let _e57 = material.strand_density;
-    let _e58 = hair_value_noise((across * _e53), _e57);
-    return ((_e46 * j) + (_e50 * _e58));
+    let _e27 = material.jitter_map_st;
+    let _e28 = weft_transform_uv(select(uv0_1, rotated, (mask > 0.5f)), _e27);
+    let _e31 = textureSample(jitter_map, material_sampler, _e28);
+    let j = _e31.x;
+    let _e37 = material.strand_along_tangent;
+    let across = select(_e28.x, _e28.y, (_e37 != 0u));
+    let _e43 = material.jitter_strength;
+    let _e47 = material.strand_noise;
+    let _e50 = material.strand_density;
+    let _e53 = hair_value_noise((across * _e50), per_vertex.w);
+    return ((_e43 * j) + (_e47 * _e53));
 }
 
 fn hair_kajiya_kay(t: vec3<f32>, h_1: vec3<f32>, exponent: f32) -> f32 {
@@ -400,23 +404,28 @@ fn vs_hair(in_1: WeftVertexInput) -> HairVaryings {
     let _e16 = weft_hair_params(vec3(0f), _e6, _e9, _e12, _e15);
     h = _e16;
     {
-        h = WeftHair(vec3(0f), 0f, vec4(0f), 0f, vec3(0f), vec3(0f), vec3(0f), vec3(0f), vec2(0f), 0f, vec4(0f), 0f);
+        h = WeftHair();
     }
-    let _e47 = h.eta;
-    let _e49 = h.s;
-    let _e52 = h.v.x;
-    let _e53 = scale;
-    let _e56 = h.sin2k;
-    let _e58 = h.r_floor;
-    let _e61 = h.cos2k;
-    let _e64 = h.blur.x;
-    let _e67 = h.mp_norm;
-    let _e70 = h.blur.y;
-    let _e73 = h.inv_v;
-    let _e76 = h.trt.x;
-    let _e79 = h.trt;
-    let _e82 = h.trt4_;
-    return HairVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, vec4<f32>(_e47, _e49, _e52, _e53), vec4<f32>(_e56, _e58), vec4<f32>(_e61, _e64), vec4<f32>(_e67, _e70), vec4<f32>(_e73, _e76), vec4<f32>(_e79.yzw, _e82));
+    let _e23 = material.anisotropic_direction;
+    let a_2 = radians(_e23);
+    let _e31 = h.eta;
+    let _e33 = h.s;
+    let _e36 = h.v.x;
+    let _e37 = scale;
+    let _e40 = h.sin2k;
+    let _e42 = h.r_floor;
+    let _e45 = h.cos2k;
+    let _e48 = h.blur.x;
+    let _e51 = h.mp_norm;
+    let _e54 = h.blur.y;
+    let _e57 = h.inv_v;
+    let _e60 = h.trt.x;
+    let _e63 = h.trt;
+    let _e66 = h.trt4_;
+    let _e71 = h.inv_eta;
+    let _e74 = material.strand_density;
+    let _e75 = hair_noise_period(_e74);
+    return HairVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, vec4<f32>(_e31, _e33, _e36, _e37), vec4<f32>(_e40, _e42), vec4<f32>(_e45, _e48), vec4<f32>(_e51, _e54), vec4<f32>(_e57, _e60), vec4<f32>(_e63.yzw, _e66), vec4<f32>(cos(a_2), sin(a_2), _e71, _e75));
 }
 
 @fragment 
@@ -436,31 +445,31 @@ fn fs_main(in_2: HairVaryings) -> @location(0) vec4<f32> {
     let n_3 = _e19.n;
     let _e23 = weft_tangent_frame(n_3, in_2.world_tangent);
     let _e25 = hair_strand(_e23, in_2.uv0_);
-    let _e27 = hair_jitter(in_2.uv0_);
-    let _e28 = weft_main_light_direction();
-    let _e29 = weft_main_light_radiance();
-    let _e30 = weft_sh_irradiance(n_3);
-    let n_dot_l = dot(n_3, _e28);
+    let _e28 = hair_jitter(in_2.uv0_, in_2.jitter);
+    let _e29 = weft_main_light_direction();
+    let _e30 = weft_main_light_radiance();
+    let _e31 = weft_sh_irradiance(n_3);
+    let n_dot_l = dot(n_3, _e29);
     {
-        let _e34 = weft_safe_normalize((_e28 + v_1), n_3);
-        let _e37 = material.primary_shift;
-        let _e41 = weft_safe_normalize((_e25 + ((_e37 + _e27) * n_3)), _e25);
-        let _e44 = material.secondary_shift;
-        let _e48 = weft_safe_normalize((_e25 + ((_e44 + _e27) * n_3)), _e25);
-        let _e51 = material.primary_color;
-        let _e55 = material.primary_intensity;
-        let _e58 = material.primary_exponent;
-        let _e59 = hair_kajiya_kay(_e41, _e34, _e58);
-        let primary = (_e51.xyz * (_e55 * _e59));
-        let _e64 = material.secondary_color;
-        let _e68 = material.secondary_intensity;
-        let _e71 = material.secondary_exponent;
-        let _e72 = hair_kajiya_kay(_e48, _e34, _e71);
-        let secondary = (_e64.xyz * (_e68 * _e72));
-        let direct = (((((base + primary) + secondary) * WEFT_INV_PI) * _e29) * saturate(n_dot_l));
-        color = (direct + (_e30 * base));
+        let _e35 = weft_safe_normalize((_e29 + v_1), n_3);
+        let _e38 = material.primary_shift;
+        let _e42 = weft_safe_normalize((_e25 + ((_e38 + _e28) * n_3)), _e25);
+        let _e45 = material.secondary_shift;
+        let _e49 = weft_safe_normalize((_e25 + ((_e45 + _e28) * n_3)), _e25);
+        let _e52 = material.primary_color;
+        let _e56 = material.primary_intensity;
+        let _e59 = material.primary_exponent;
+        let _e60 = hair_kajiya_kay(_e42, _e35, _e59);
+        let primary = (_e52.xyz * (_e56 * _e60));
+        let _e65 = material.secondary_color;
+        let _e69 = material.secondary_intensity;
+        let _e72 = material.secondary_exponent;
+        let _e73 = hair_kajiya_kay(_e49, _e35, _e72);
+        let secondary = (_e65.xyz * (_e69 * _e73));
+        let direct = (((((base + primary) + secondary) * WEFT_INV_PI) * _e30) * saturate(n_dot_l));
+        color = (direct + (_e31 * base));
     }
-    let _e84 = color;
-    let radiance = clamp(_e84, vec3(0f), vec3(65504f));
+    let _e85 = color;
+    let radiance = clamp(_e85, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

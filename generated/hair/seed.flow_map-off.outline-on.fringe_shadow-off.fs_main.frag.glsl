@@ -77,6 +77,7 @@ struct WeftHair {
     float r_floor;
     vec4 trt;
     float trt4_;
+    float inv_eta;
 };
 struct WeftHairLobes {
     vec3 s;
@@ -95,6 +96,7 @@ struct HairVaryings {
     vec4 mp_norm;
     vec4 inv_v;
     vec4 trt;
+    vec4 jitter;
 };
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
@@ -130,6 +132,7 @@ layout(location = 6) flat in vec4 _vs2fs_location6;
 layout(location = 7) flat in vec4 _vs2fs_location7;
 layout(location = 8) flat in vec4 _vs2fs_location8;
 layout(location = 9) flat in vec4 _vs2fs_location9;
+layout(location = 10) flat in vec4 _vs2fs_location10;
 layout(location = 0) out vec4 _fs2p_location0;
 
 vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
@@ -233,7 +236,7 @@ float weft_hair_logistic_scale(float beta_n) {
 }
 
 WeftHair weft_hair_params(vec3 sigma_a, float eta, float beta_m_1, float beta_n_1, float alpha_deg) {
-    WeftHair hair = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0, vec4(0.0), 0.0);
+    WeftHair hair = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0, vec4(0.0), 0.0, 0.0);
     hair.sigma_a = max(sigma_a, vec3(0.0));
     hair.eta = max(eta, 1.0001);
     float _e13 = weft_hair_variance(beta_m_1);
@@ -265,8 +268,14 @@ WeftHair weft_hair_params(vec3 sigma_a, float eta, float beta_m_1, float beta_n_
     float sh_1 = hair.s;
     hair.trt = vec4((-9.2609 + (sh_1 * (65.993 - (107.38 * sh_1)))), (72.357 + (sh_1 * (-624.68 + (1069.8 * sh_1)))), (-153.75 + (sh_1 * (1704.7 - (3127.5 * sh_1)))), (-67.745 + (sh_1 * (-1105.8 + (2706.6 * sh_1)))));
     hair.trt4_ = (239.74 - (430.94 * sh_1));
-    WeftHair _e122 = hair;
-    return _e122;
+    float _e124 = hair.eta;
+    hair.inv_eta = (1.0 / _e124);
+    WeftHair _e127 = hair;
+    return _e127;
+}
+
+float hair_noise_period(float density) {
+    return max(roundEven(density), 1.0);
 }
 
 vec3 hair_strand(mat3x3 frame, vec2 uv0_) {
@@ -285,37 +294,33 @@ float hair_hash(uint x_2) {
     return (float(((word >> 22u) ^ word)) * 2.3283064e-10);
 }
 
-float hair_value_noise(float x_3, float period) {
-    float p = max(roundEven(period), 1.0);
+float hair_value_noise(float x_3, float p) {
     float cell = floor(x_3);
     float f = (x_3 - cell);
     float c0_ = (cell - (p * floor((cell / p))));
     float c1_1 = (((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0));
-    float _e19 = hair_hash(uint(c0_));
-    float _e21 = hair_hash(uint(c1_1));
-    return (mix(_e19, _e21, ((f * f) * (3.0 - (2.0 * f)))) - 0.5);
+    float _e16 = hair_hash(uint(c0_));
+    float _e18 = hair_hash(uint(c1_1));
+    return (mix(_e16, _e18, ((f * f) * (3.0 - (2.0 * f)))) - 0.5);
 }
 
-float hair_jitter(vec2 uv0_1) {
-    vec4 _e3 = texture(_group_1_binding_6_fs, vec2(uv0_1));
-    float mask = step(0.8, _e3.x);
-    float _e9 = _group_1_binding_0_fs.anisotropic_direction;
-    float a_2 = radians(_e9);
-    float c = cos(a_2);
-    float s_2 = sin(a_2);
+float hair_jitter(vec2 uv0_1, vec4 per_vertex) {
+    vec4 _e4 = texture(_group_1_binding_6_fs, vec2(uv0_1));
+    float mask = step(0.8, _e4.x);
+    float c = per_vertex.x;
+    float s_2 = per_vertex.y;
     vec2 rotated = vec2(((c * uv0_1.x) + (s_2 * uv0_1.y)), ((-(s_2) * uv0_1.x) + (c * uv0_1.y)));
-    vec4 _e30 = _group_1_binding_0_fs.jitter_map_st;
-    vec2 _e31 = weft_transform_uv(((mask > 0.5) ? rotated : uv0_1), _e30);
-    vec4 _e34 = texture(_group_1_binding_5_fs, vec2(_e31));
-    float j = _e34.x;
-    uint _e40 = _group_1_binding_0_fs.strand_along_tangent;
-    float across = ((_e40 != 0u) ? _e31.y : _e31.x);
-    float _e46 = _group_1_binding_0_fs.jitter_strength;
-    float _e50 = _group_1_binding_0_fs.strand_noise;
-    float _e53 = _group_1_binding_0_fs.strand_density;
-    float _e57 = _group_1_binding_0_fs.strand_density;
-    float _e58 = hair_value_noise((across * _e53), _e57);
-    return ((_e46 * j) + (_e50 * _e58));
+    vec4 _e27 = _group_1_binding_0_fs.jitter_map_st;
+    vec2 _e28 = weft_transform_uv(((mask > 0.5) ? rotated : uv0_1), _e27);
+    vec4 _e31 = texture(_group_1_binding_5_fs, vec2(_e28));
+    float j = _e31.x;
+    uint _e37 = _group_1_binding_0_fs.strand_along_tangent;
+    float across = ((_e37 != 0u) ? _e28.y : _e28.x);
+    float _e43 = _group_1_binding_0_fs.jitter_strength;
+    float _e47 = _group_1_binding_0_fs.strand_noise;
+    float _e50 = _group_1_binding_0_fs.strand_density;
+    float _e53 = hair_value_noise((across * _e50), per_vertex.w);
+    return ((_e43 * j) + (_e47 * _e53));
 }
 
 float hair_kajiya_kay(vec3 t, vec3 h_1, float exponent) {
@@ -326,7 +331,7 @@ float hair_kajiya_kay(vec3 t, vec3 h_1, float exponent) {
 }
 
 void main() {
-    HairVaryings in_2 = HairVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3, _vs2fs_location4, _vs2fs_location5, _vs2fs_location6, _vs2fs_location7, _vs2fs_location8, _vs2fs_location9);
+    HairVaryings in_2 = HairVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3, _vs2fs_location4, _vs2fs_location5, _vs2fs_location6, _vs2fs_location7, _vs2fs_location8, _vs2fs_location9, _vs2fs_location10);
     vec3 color = vec3(0.0);
     WeftHairLobes lobes = WeftHairLobes(vec3(0.0), vec3(0.0), vec3(0.0));
     vec4 _e4 = _group_1_binding_0_fs.base_map_st;
@@ -341,32 +346,32 @@ void main() {
     vec3 n_3 = _e19.n;
     mat3x3 _e23 = weft_tangent_frame(n_3, in_2.world_tangent);
     vec3 _e25 = hair_strand(_e23, in_2.uv0_);
-    float _e27 = hair_jitter(in_2.uv0_);
-    vec3 _e28 = weft_main_light_direction();
-    vec3 _e29 = weft_main_light_radiance();
-    vec3 _e30 = weft_sh_irradiance(n_3);
-    float n_dot_l = dot(n_3, _e28);
+    float _e28 = hair_jitter(in_2.uv0_, in_2.jitter);
+    vec3 _e29 = weft_main_light_direction();
+    vec3 _e30 = weft_main_light_radiance();
+    vec3 _e31 = weft_sh_irradiance(n_3);
+    float n_dot_l = dot(n_3, _e29);
     {
-        vec3 _e34 = weft_safe_normalize((_e28 + v_1), n_3);
-        float _e37 = _group_1_binding_0_fs.primary_shift;
-        vec3 _e41 = weft_safe_normalize((_e25 + ((_e37 + _e27) * n_3)), _e25);
-        float _e44 = _group_1_binding_0_fs.secondary_shift;
-        vec3 _e48 = weft_safe_normalize((_e25 + ((_e44 + _e27) * n_3)), _e25);
-        vec4 _e51 = _group_1_binding_0_fs.primary_color;
-        float _e55 = _group_1_binding_0_fs.primary_intensity;
-        float _e58 = _group_1_binding_0_fs.primary_exponent;
-        float _e59 = hair_kajiya_kay(_e41, _e34, _e58);
-        vec3 primary = (_e51.xyz * (_e55 * _e59));
-        vec4 _e64 = _group_1_binding_0_fs.secondary_color;
-        float _e68 = _group_1_binding_0_fs.secondary_intensity;
-        float _e71 = _group_1_binding_0_fs.secondary_exponent;
-        float _e72 = hair_kajiya_kay(_e48, _e34, _e71);
-        vec3 secondary = (_e64.xyz * (_e68 * _e72));
-        vec3 direct = (((((base + primary) + secondary) * WEFT_INV_PI) * _e29) * clamp(n_dot_l, 0.0, 1.0));
-        color = (direct + (_e30 * base));
+        vec3 _e35 = weft_safe_normalize((_e29 + v_1), n_3);
+        float _e38 = _group_1_binding_0_fs.primary_shift;
+        vec3 _e42 = weft_safe_normalize((_e25 + ((_e38 + _e28) * n_3)), _e25);
+        float _e45 = _group_1_binding_0_fs.secondary_shift;
+        vec3 _e49 = weft_safe_normalize((_e25 + ((_e45 + _e28) * n_3)), _e25);
+        vec4 _e52 = _group_1_binding_0_fs.primary_color;
+        float _e56 = _group_1_binding_0_fs.primary_intensity;
+        float _e59 = _group_1_binding_0_fs.primary_exponent;
+        float _e60 = hair_kajiya_kay(_e42, _e35, _e59);
+        vec3 primary = (_e52.xyz * (_e56 * _e60));
+        vec4 _e65 = _group_1_binding_0_fs.secondary_color;
+        float _e69 = _group_1_binding_0_fs.secondary_intensity;
+        float _e72 = _group_1_binding_0_fs.secondary_exponent;
+        float _e73 = hair_kajiya_kay(_e49, _e35, _e72);
+        vec3 secondary = (_e65.xyz * (_e69 * _e73));
+        vec3 direct = (((((base + primary) + secondary) * WEFT_INV_PI) * _e30) * clamp(n_dot_l, 0.0, 1.0));
+        color = (direct + (_e31 * base));
     }
-    vec3 _e84 = color;
-    vec3 radiance = clamp(_e84, vec3(0.0), vec3(65504.0));
+    vec3 _e85 = color;
+    vec3 radiance = clamp(_e85, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

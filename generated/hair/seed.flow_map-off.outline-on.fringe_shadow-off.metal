@@ -94,7 +94,8 @@ struct WeftHair {
     char _pad10[4];
     metal::float4 trt;
     float trt4_;
-    char _pad12[12];
+    float inv_eta;
+    char _pad13[8];
 };
 struct WeftHairLobes {
     metal::float3 s;
@@ -114,6 +115,7 @@ struct HairVaryings {
     metal::float4 mp_norm;
     metal::float4 inv_v;
     metal::float4 trt;
+    metal::float4 jitter;
 };
 constant float WEFT_PI = 3.1415927;
 constant float WEFT_INV_PI = 0.31830987;
@@ -327,8 +329,16 @@ WeftHair weft_hair_params(
     float sh_1 = hair.s;
     hair.trt = metal::float4(-9.2609 + (sh_1 * (65.993 - (107.38 * sh_1))), 72.357 + (sh_1 * (-624.68 + (1069.8 * sh_1))), -153.75 + (sh_1 * (1704.7 - (3127.5 * sh_1))), -67.745 + (sh_1 * (-1105.8 + (2706.6 * sh_1))));
     hair.trt4_ = 239.74 - (430.94 * sh_1);
-    WeftHair _e122 = hair;
-    return _e122;
+    float _e124 = hair.eta;
+    hair.inv_eta = 1.0 / _e124;
+    WeftHair _e127 = hair;
+    return _e127;
+}
+
+float hair_noise_period(
+    float density
+) {
+    return metal::max(metal::rint(density), 1.0);
 }
 
 metal::float3 hair_strand(
@@ -359,44 +369,41 @@ uint naga_f2u32(float value) {
 
 float hair_value_noise(
     float x_3,
-    float period
+    float p
 ) {
-    float p = metal::max(metal::rint(period), 1.0);
     float cell = metal::floor(x_3);
     float f = x_3 - cell;
     float c0_ = cell - (p * metal::floor(cell / p));
     float c1_1 = ((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0);
-    float _e19 = hair_hash(naga_f2u32(c0_));
-    float _e21 = hair_hash(naga_f2u32(c1_1));
-    return metal::mix(_e19, _e21, (f * f) * (3.0 - (2.0 * f))) - 0.5;
+    float _e16 = hair_hash(naga_f2u32(c0_));
+    float _e18 = hair_hash(naga_f2u32(c1_1));
+    return metal::mix(_e16, _e18, (f * f) * (3.0 - (2.0 * f))) - 0.5;
 }
 
 float hair_jitter(
     metal::float2 uv0_1,
+    metal::float4 per_vertex,
     constant WeftMaterial& material,
     metal::sampler material_sampler,
     metal::texture2d<float, metal::access::sample> jitter_map,
     metal::texture2d<float, metal::access::sample> uv_rotate_mask
 ) {
-    metal::float4 _e3 = uv_rotate_mask.sample(material_sampler, uv0_1);
-    float mask = metal::step(0.8, _e3.x);
-    float _e9 = material.anisotropic_direction;
-    float a_2 = ((_e9) * 0.017453292519943295474);
-    float c = metal::cos(a_2);
-    float s_2 = metal::sin(a_2);
+    metal::float4 _e4 = uv_rotate_mask.sample(material_sampler, uv0_1);
+    float mask = metal::step(0.8, _e4.x);
+    float c = per_vertex.x;
+    float s_2 = per_vertex.y;
     metal::float2 rotated = metal::float2((c * uv0_1.x) + (s_2 * uv0_1.y), (-(s_2) * uv0_1.x) + (c * uv0_1.y));
-    metal::float4 _e30 = material.jitter_map_st;
-    metal::float2 _e31 = weft_transform_uv((mask > 0.5) ? rotated : uv0_1, _e30);
-    metal::float4 _e34 = jitter_map.sample(material_sampler, _e31);
-    float j = _e34.x;
-    uint _e40 = material.strand_along_tangent;
-    float across = (_e40 != 0u) ? _e31.y : _e31.x;
-    float _e46 = material.jitter_strength;
-    float _e50 = material.strand_noise;
-    float _e53 = material.strand_density;
-    float _e57 = material.strand_density;
-    float _e58 = hair_value_noise(across * _e53, _e57);
-    return (_e46 * j) + (_e50 * _e58);
+    metal::float4 _e27 = material.jitter_map_st;
+    metal::float2 _e28 = weft_transform_uv((mask > 0.5) ? rotated : uv0_1, _e27);
+    metal::float4 _e31 = jitter_map.sample(material_sampler, _e28);
+    float j = _e31.x;
+    uint _e37 = material.strand_along_tangent;
+    float across = (_e37 != 0u) ? _e28.y : _e28.x;
+    float _e43 = material.jitter_strength;
+    float _e47 = material.strand_noise;
+    float _e50 = material.strand_density;
+    float _e53 = hair_value_noise(across * _e50, per_vertex.w);
+    return (_e43 * j) + (_e47 * _e53);
 }
 
 float hair_kajiya_kay(
@@ -494,6 +501,7 @@ struct vs_hairOutput {
     metal::float4 mp_norm [[user(loc7), flat]];
     metal::float4 inv_v [[user(loc8), flat]];
     metal::float4 trt [[user(loc9), flat]];
+    metal::float4 jitter [[user(loc10), flat]];
 };
 vertex vs_hairOutput vs_hair(
   vs_hairInput varyings_2 [[stage_in]]
@@ -512,24 +520,29 @@ vertex vs_hairOutput vs_hair(
     WeftHair _e16 = weft_hair_params(metal::float3(0.0), _e6, _e9, _e12, _e15);
     h = _e16;
     {
-        h = WeftHair {metal::float3(0.0), 0.0, metal::float4(0.0), 0.0, {}, metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float3(0.0), metal::float2(0.0), 0.0, {}, metal::float4(0.0), 0.0};
+        h = WeftHair {};
     }
-    float _e47 = h.eta;
-    float _e49 = h.s;
-    float _e52 = h.v.x;
-    float _e53 = scale;
-    metal::float3 _e56 = h.sin2k;
-    float _e58 = h.r_floor;
-    metal::float3 _e61 = h.cos2k;
-    float _e64 = h.blur.x;
-    metal::float3 _e67 = h.mp_norm;
-    float _e70 = h.blur.y;
-    metal::float3 _e73 = h.inv_v;
-    float _e76 = h.trt.x;
-    metal::float4 _e79 = h.trt;
-    float _e82 = h.trt4_;
-    const auto _tmp_1 = HairVaryings {_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, {}, metal::float4(_e47, _e49, _e52, _e53), metal::float4(_e56, _e58), metal::float4(_e61, _e64), metal::float4(_e67, _e70), metal::float4(_e73, _e76), metal::float4(_e79.yzw, _e82)};
-    return vs_hairOutput { _tmp_1.clip_position, _tmp_1.world_position, _tmp_1.world_normal, _tmp_1.world_tangent, _tmp_1.uv0_, _tmp_1.fibre, _tmp_1.sin2k, _tmp_1.cos2k, _tmp_1.mp_norm, _tmp_1.inv_v, _tmp_1.trt };
+    float _e23 = material.anisotropic_direction;
+    float a_2 = ((_e23) * 0.017453292519943295474);
+    float _e31 = h.eta;
+    float _e33 = h.s;
+    float _e36 = h.v.x;
+    float _e37 = scale;
+    metal::float3 _e40 = h.sin2k;
+    float _e42 = h.r_floor;
+    metal::float3 _e45 = h.cos2k;
+    float _e48 = h.blur.x;
+    metal::float3 _e51 = h.mp_norm;
+    float _e54 = h.blur.y;
+    metal::float3 _e57 = h.inv_v;
+    float _e60 = h.trt.x;
+    metal::float4 _e63 = h.trt;
+    float _e66 = h.trt4_;
+    float _e71 = h.inv_eta;
+    float _e74 = material.strand_density;
+    float _e75 = hair_noise_period(_e74);
+    const auto _tmp_1 = HairVaryings {_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, {}, metal::float4(_e31, _e33, _e36, _e37), metal::float4(_e40, _e42), metal::float4(_e45, _e48), metal::float4(_e51, _e54), metal::float4(_e57, _e60), metal::float4(_e63.yzw, _e66), metal::float4(metal::cos(a_2), metal::sin(a_2), _e71, _e75)};
+    return vs_hairOutput { _tmp_1.clip_position, _tmp_1.world_position, _tmp_1.world_normal, _tmp_1.world_tangent, _tmp_1.uv0_, _tmp_1.fibre, _tmp_1.sin2k, _tmp_1.cos2k, _tmp_1.mp_norm, _tmp_1.inv_v, _tmp_1.trt, _tmp_1.jitter };
 }
 
 
@@ -544,6 +557,7 @@ struct fs_mainInput {
     metal::float4 mp_norm [[user(loc7), flat]];
     metal::float4 inv_v [[user(loc8), flat]];
     metal::float4 trt [[user(loc9), flat]];
+    metal::float4 jitter [[user(loc10), flat]];
 };
 struct fs_mainOutput {
     metal::float4 member_3 [[color(0)]];
@@ -558,7 +572,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> jitter_map [[texture(1)]]
 , metal::texture2d<float, metal::access::sample> uv_rotate_mask [[texture(2)]]
 ) {
-    const HairVaryings in_2 = { clip_position, varyings_3.world_position_2, varyings_3.world_normal_1, varyings_3.world_tangent, varyings_3.uv0_2, {}, varyings_3.fibre, varyings_3.sin2k, varyings_3.cos2k, varyings_3.mp_norm, varyings_3.inv_v, varyings_3.trt };
+    const HairVaryings in_2 = { clip_position, varyings_3.world_position_2, varyings_3.world_normal_1, varyings_3.world_tangent, varyings_3.uv0_2, {}, varyings_3.fibre, varyings_3.sin2k, varyings_3.cos2k, varyings_3.mp_norm, varyings_3.inv_v, varyings_3.trt, varyings_3.jitter };
     metal::float3 color = {};
     WeftHairLobes lobes = {};
     metal::float4 _e4 = material.base_map_st;
@@ -573,31 +587,31 @@ fragment fs_mainOutput fs_main(
     metal::float3 n_3 = _e19.n;
     metal::float3x3 _e23 = weft_tangent_frame(n_3, in_2.world_tangent);
     metal::float3 _e25 = hair_strand(_e23, in_2.uv0_, material);
-    float _e27 = hair_jitter(in_2.uv0_, material, material_sampler, jitter_map, uv_rotate_mask);
-    metal::float3 _e28 = weft_main_light_direction(weft_frame);
-    metal::float3 _e29 = weft_main_light_radiance(weft_frame);
-    metal::float3 _e30 = weft_sh_irradiance(n_3, weft_frame);
-    float n_dot_l = metal::dot(n_3, _e28);
+    float _e28 = hair_jitter(in_2.uv0_, in_2.jitter, material, material_sampler, jitter_map, uv_rotate_mask);
+    metal::float3 _e29 = weft_main_light_direction(weft_frame);
+    metal::float3 _e30 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e31 = weft_sh_irradiance(n_3, weft_frame);
+    float n_dot_l = metal::dot(n_3, _e29);
     {
-        metal::float3 _e34 = weft_safe_normalize(_e28 + v_1, n_3);
-        float _e37 = material.primary_shift;
-        metal::float3 _e41 = weft_safe_normalize(_e25 + ((_e37 + _e27) * n_3), _e25);
-        float _e44 = material.secondary_shift;
-        metal::float3 _e48 = weft_safe_normalize(_e25 + ((_e44 + _e27) * n_3), _e25);
-        metal::float4 _e51 = material.primary_color;
-        float _e55 = material.primary_intensity;
-        float _e58 = material.primary_exponent;
-        float _e59 = hair_kajiya_kay(_e41, _e34, _e58);
-        metal::float3 primary = _e51.xyz * (_e55 * _e59);
-        metal::float4 _e64 = material.secondary_color;
-        float _e68 = material.secondary_intensity;
-        float _e71 = material.secondary_exponent;
-        float _e72 = hair_kajiya_kay(_e48, _e34, _e71);
-        metal::float3 secondary = _e64.xyz * (_e68 * _e72);
-        metal::float3 direct = ((((base + primary) + secondary) * WEFT_INV_PI) * _e29) * metal::saturate(n_dot_l);
-        color = direct + (_e30 * base);
+        metal::float3 _e35 = weft_safe_normalize(_e29 + v_1, n_3);
+        float _e38 = material.primary_shift;
+        metal::float3 _e42 = weft_safe_normalize(_e25 + ((_e38 + _e28) * n_3), _e25);
+        float _e45 = material.secondary_shift;
+        metal::float3 _e49 = weft_safe_normalize(_e25 + ((_e45 + _e28) * n_3), _e25);
+        metal::float4 _e52 = material.primary_color;
+        float _e56 = material.primary_intensity;
+        float _e59 = material.primary_exponent;
+        float _e60 = hair_kajiya_kay(_e42, _e35, _e59);
+        metal::float3 primary = _e52.xyz * (_e56 * _e60);
+        metal::float4 _e65 = material.secondary_color;
+        float _e69 = material.secondary_intensity;
+        float _e72 = material.secondary_exponent;
+        float _e73 = hair_kajiya_kay(_e49, _e35, _e72);
+        metal::float3 secondary = _e65.xyz * (_e69 * _e73);
+        metal::float3 direct = ((((base + primary) + secondary) * WEFT_INV_PI) * _e30) * metal::saturate(n_dot_l);
+        color = direct + (_e31 * base);
     }
-    metal::float3 _e84 = color;
-    metal::float3 radiance = metal::clamp(_e84, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e85 = color;
+    metal::float3 radiance = metal::clamp(_e85, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

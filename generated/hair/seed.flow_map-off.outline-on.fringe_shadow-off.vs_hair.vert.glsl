@@ -77,6 +77,7 @@ struct WeftHair {
     float r_floor;
     vec4 trt;
     float trt4_;
+    float inv_eta;
 };
 struct WeftHairLobes {
     vec3 s;
@@ -95,6 +96,7 @@ struct HairVaryings {
     vec4 mp_norm;
     vec4 inv_v;
     vec4 trt;
+    vec4 jitter;
 };
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
@@ -130,6 +132,7 @@ layout(location = 6) flat out vec4 _vs2fs_location6;
 layout(location = 7) flat out vec4 _vs2fs_location7;
 layout(location = 8) flat out vec4 _vs2fs_location8;
 layout(location = 9) flat out vec4 _vs2fs_location9;
+layout(location = 10) flat out vec4 _vs2fs_location10;
 
 vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
     float len2_ = dot(v, v);
@@ -253,7 +256,7 @@ float weft_hair_logistic_scale(float beta_n) {
 }
 
 WeftHair weft_hair_params(vec3 sigma_a, float eta, float beta_m_1, float beta_n_1, float alpha_deg) {
-    WeftHair hair = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0, vec4(0.0), 0.0);
+    WeftHair hair = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0, vec4(0.0), 0.0, 0.0);
     hair.sigma_a = max(sigma_a, vec3(0.0));
     hair.eta = max(eta, 1.0001);
     float _e13 = weft_hair_variance(beta_m_1);
@@ -285,8 +288,14 @@ WeftHair weft_hair_params(vec3 sigma_a, float eta, float beta_m_1, float beta_n_
     float sh_1 = hair.s;
     hair.trt = vec4((-9.2609 + (sh_1 * (65.993 - (107.38 * sh_1)))), (72.357 + (sh_1 * (-624.68 + (1069.8 * sh_1)))), (-153.75 + (sh_1 * (1704.7 - (3127.5 * sh_1)))), (-67.745 + (sh_1 * (-1105.8 + (2706.6 * sh_1)))));
     hair.trt4_ = (239.74 - (430.94 * sh_1));
-    WeftHair _e122 = hair;
-    return _e122;
+    float _e124 = hair.eta;
+    hair.inv_eta = (1.0 / _e124);
+    WeftHair _e127 = hair;
+    return _e127;
+}
+
+float hair_noise_period(float density) {
+    return max(roundEven(density), 1.0);
 }
 
 vec3 hair_strand(mat3x3 frame, vec2 uv0_) {
@@ -305,15 +314,14 @@ float hair_hash(uint x_2) {
     return (float(((word >> 22u) ^ word)) * 2.3283064e-10);
 }
 
-float hair_value_noise(float x_3, float period) {
-    float p = max(roundEven(period), 1.0);
+float hair_value_noise(float x_3, float p) {
     float cell = floor(x_3);
     float f = (x_3 - cell);
     float c0_ = (cell - (p * floor((cell / p))));
     float c1_1 = (((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0));
-    float _e19 = hair_hash(uint(c0_));
-    float _e21 = hair_hash(uint(c1_1));
-    return (mix(_e19, _e21, ((f * f) * (3.0 - (2.0 * f)))) - 0.5);
+    float _e16 = hair_hash(uint(c0_));
+    float _e18 = hair_hash(uint(c1_1));
+    return (mix(_e16, _e18, ((f * f) * (3.0 - (2.0 * f)))) - 0.5);
 }
 
 float hair_kajiya_kay(vec3 t, vec3 h_1, float exponent) {
@@ -325,7 +333,7 @@ float hair_kajiya_kay(vec3 t, vec3 h_1, float exponent) {
 
 void main() {
     WeftVertexInput in_1 = WeftVertexInput(_p2vs_location0, _p2vs_location1, _p2vs_location2, _p2vs_location3);
-    WeftHair h = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0, vec4(0.0), 0.0);
+    WeftHair h = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0, vec4(0.0), 0.0, 0.0);
     float scale = 0.0;
     WeftVaryings _e1 = weft_forward_vertex(in_1);
     float _e6 = _group_1_binding_0_vs.ior;
@@ -335,23 +343,28 @@ void main() {
     WeftHair _e16 = weft_hair_params(vec3(0.0), _e6, _e9, _e12, _e15);
     h = _e16;
     {
-        h = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0, vec4(0.0), 0.0);
+        h = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0, vec4(0.0), 0.0, 0.0);
     }
-    float _e47 = h.eta;
-    float _e49 = h.s;
-    float _e52 = h.v.x;
-    float _e53 = scale;
-    vec3 _e56 = h.sin2k;
-    float _e58 = h.r_floor;
-    vec3 _e61 = h.cos2k;
-    float _e64 = h.blur.x;
-    vec3 _e67 = h.mp_norm;
-    float _e70 = h.blur.y;
-    vec3 _e73 = h.inv_v;
-    float _e76 = h.trt.x;
-    vec4 _e79 = h.trt;
-    float _e82 = h.trt4_;
-    HairVaryings _tmp_return = HairVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, vec4(_e47, _e49, _e52, _e53), vec4(_e56, _e58), vec4(_e61, _e64), vec4(_e67, _e70), vec4(_e73, _e76), vec4(_e79.yzw, _e82));
+    float _e23 = _group_1_binding_0_vs.anisotropic_direction;
+    float a_2 = radians(_e23);
+    float _e31 = h.eta;
+    float _e33 = h.s;
+    float _e36 = h.v.x;
+    float _e37 = scale;
+    vec3 _e40 = h.sin2k;
+    float _e42 = h.r_floor;
+    vec3 _e45 = h.cos2k;
+    float _e48 = h.blur.x;
+    vec3 _e51 = h.mp_norm;
+    float _e54 = h.blur.y;
+    vec3 _e57 = h.inv_v;
+    float _e60 = h.trt.x;
+    vec4 _e63 = h.trt;
+    float _e66 = h.trt4_;
+    float _e71 = h.inv_eta;
+    float _e74 = _group_1_binding_0_vs.strand_density;
+    float _e75 = hair_noise_period(_e74);
+    HairVaryings _tmp_return = HairVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, vec4(_e31, _e33, _e36, _e37), vec4(_e40, _e42), vec4(_e45, _e48), vec4(_e51, _e54), vec4(_e57, _e60), vec4(_e63.yzw, _e66), vec4(cos(a_2), sin(a_2), _e71, _e75));
     gl_Position = _tmp_return.clip_position;
     _vs2fs_location0 = _tmp_return.world_position;
     _vs2fs_location1 = _tmp_return.world_normal;
@@ -363,6 +376,7 @@ void main() {
     _vs2fs_location7 = _tmp_return.mp_norm;
     _vs2fs_location8 = _tmp_return.inv_v;
     _vs2fs_location9 = _tmp_return.trt;
+    _vs2fs_location10 = _tmp_return.jitter;
     gl_Position.yz = vec2(-gl_Position.y, gl_Position.z * 2.0 - gl_Position.w);
     return;
 }

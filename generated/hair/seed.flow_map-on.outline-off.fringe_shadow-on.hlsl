@@ -103,9 +103,9 @@ struct WeftHair {
     int _pad10_0;
     float4 trt;
     float trt4_;
+    float inv_eta;
     int _end_pad_0;
     int _end_pad_1;
-    int _end_pad_2;
 };
 
 struct WeftHairLobes {
@@ -129,6 +129,7 @@ struct HairVaryings {
     nointerpolation float4 mp_norm : LOC7;
     nointerpolation float4 inv_v : LOC8;
     nointerpolation float4 trt : LOC9;
+    nointerpolation float4 jitter : LOC10;
 };
 
 static const float WEFT_PI = 3.1415927;
@@ -172,6 +173,7 @@ struct VertexOutput_vs_hair {
     nointerpolation float4 mp_norm : LOC7;
     nointerpolation float4 inv_v : LOC8;
     nointerpolation float4 trt : LOC9;
+    nointerpolation float4 jitter : LOC10;
     float4 clip_position_1 : SV_Position;
 };
 
@@ -186,6 +188,7 @@ struct FragmentInput_fs_main {
     nointerpolation float4 mp_norm_1 : LOC7;
     nointerpolation float4 inv_v_1 : LOC8;
     nointerpolation float4 trt_1 : LOC9;
+    nointerpolation float4 jitter_1 : LOC10;
     float4 clip_position_2 : SV_Position;
 };
 
@@ -370,9 +373,16 @@ WeftHair weft_hair_params(float3 sigma_a, float eta, float beta_m_1, float beta_
     float sh_1 = hair.s;
     hair.trt = float4((-9.2609 + (sh_1 * (65.993 - (107.38 * sh_1)))), (72.357 + (sh_1 * (-624.68 + (1069.8 * sh_1)))), (-153.75 + (sh_1 * (1704.7 - (3127.5 * sh_1)))), (-67.745 + (sh_1 * (-1105.8 + (2706.6 * sh_1)))));
     hair.trt4_ = (239.74 - (430.94 * sh_1));
-    WeftHair _e122 = hair;
-    const WeftHair wefthair = _e122;
+    float _e124 = hair.eta;
+    hair.inv_eta = (1.0 / _e124);
+    WeftHair _e127 = hair;
+    const WeftHair wefthair = _e127;
     return wefthair;
+}
+
+float hair_noise_period(float density)
+{
+    return max(round(density), 1.0);
 }
 
 float3 hair_strand(float3x3 frame, float2 uv0_)
@@ -405,39 +415,35 @@ uint naga_f2u32(float value) {
     return uint(clamp(value, 0.0, 4294967000.0));
 }
 
-float hair_value_noise(float x_3, float period)
+float hair_value_noise(float x_3, float p)
 {
-    float p = max(round(period), 1.0);
     float cell = floor(x_3);
     float f_1 = (x_3 - cell);
     float c0_ = (cell - (p * floor((cell / p))));
     float c1_1 = (((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0));
-    const float _e19 = hair_hash(naga_f2u32(c0_));
-    const float _e21 = hair_hash(naga_f2u32(c1_1));
-    return (lerp(_e19, _e21, ((f_1 * f_1) * (3.0 - (2.0 * f_1)))) - 0.5);
+    const float _e16 = hair_hash(naga_f2u32(c0_));
+    const float _e18 = hair_hash(naga_f2u32(c1_1));
+    return (lerp(_e16, _e18, ((f_1 * f_1) * (3.0 - (2.0 * f_1)))) - 0.5);
 }
 
-float hair_jitter(float2 uv0_1)
+float hair_jitter(float2 uv0_1, float4 per_vertex)
 {
-    float4 _e3 = uv_rotate_mask.Sample(material_sampler, uv0_1);
-    float mask = step(0.8, _e3.x);
-    float _e9 = material.anisotropic_direction;
-    float a_2 = radians(_e9);
-    float c = cos(a_2);
-    float s_2 = sin(a_2);
+    float4 _e4 = uv_rotate_mask.Sample(material_sampler, uv0_1);
+    float mask = step(0.8, _e4.x);
+    float c = per_vertex.x;
+    float s_2 = per_vertex.y;
     float2 rotated = float2(((c * uv0_1.x) + (s_2 * uv0_1.y)), ((-(s_2) * uv0_1.x) + (c * uv0_1.y)));
-    float4 _e30 = material.jitter_map_st;
-    const float2 _e31 = weft_transform_uv(((mask > 0.5) ? rotated : uv0_1), _e30);
-    float4 _e34 = jitter_map.Sample(material_sampler, _e31);
-    float j = _e34.x;
-    uint _e40 = material.strand_along_tangent;
-    float across = ((_e40 != 0u) ? _e31.y : _e31.x);
-    float _e46 = material.jitter_strength;
-    float _e50 = material.strand_noise;
-    float _e53 = material.strand_density;
-    float _e57 = material.strand_density;
-    const float _e58 = hair_value_noise((across * _e53), _e57);
-    return ((_e46 * j) + (_e50 * _e58));
+    float4 _e27 = material.jitter_map_st;
+    const float2 _e28 = weft_transform_uv(((mask > 0.5) ? rotated : uv0_1), _e27);
+    float4 _e31 = jitter_map.Sample(material_sampler, _e28);
+    float j = _e31.x;
+    uint _e37 = material.strand_along_tangent;
+    float across = ((_e37 != 0u) ? _e28.y : _e28.x);
+    float _e43 = material.jitter_strength;
+    float _e47 = material.strand_noise;
+    float _e50 = material.strand_density;
+    const float _e53 = hair_value_noise((across * _e50), per_vertex.w);
+    return ((_e43 * j) + (_e47 * _e53));
 }
 
 float hair_kajiya_kay(float3 t, float3 h_1, float exponent)
@@ -485,24 +491,7 @@ float4 fs_fringe_shadow() : SV_Target0
     return float4(max(_e2.xyz, (0.0).xxx), 1.0);
 }
 
-WeftHair ConstructWeftHair(float3 arg0, float arg1, float4 arg2, float arg3, float3 arg4, float3 arg5, float3 arg6, float3 arg7, float2 arg8, float arg9, float4 arg10, float arg11) {
-    WeftHair ret = (WeftHair)0;
-    ret.sigma_a = arg0;
-    ret.eta = arg1;
-    ret.v = arg2;
-    ret.s = arg3;
-    ret.sin2k = arg4;
-    ret.cos2k = arg5;
-    ret.inv_v = arg6;
-    ret.mp_norm = arg7;
-    ret.blur = arg8;
-    ret.r_floor = arg9;
-    ret.trt = arg10;
-    ret.trt4_ = arg11;
-    return ret;
-}
-
-HairVaryings ConstructHairVaryings(float4 arg0, float3 arg1, float3 arg2, float4 arg3, float2 arg4, float4 arg5, float4 arg6, float4 arg7, float4 arg8, float4 arg9, float4 arg10) {
+HairVaryings ConstructHairVaryings(float4 arg0, float3 arg1, float3 arg2, float4 arg3, float2 arg4, float4 arg5, float4 arg6, float4 arg7, float4 arg8, float4 arg9, float4 arg10, float4 arg11) {
     HairVaryings ret = (HairVaryings)0;
     ret.clip_position = arg0;
     ret.world_position = arg1;
@@ -515,7 +504,12 @@ HairVaryings ConstructHairVaryings(float4 arg0, float3 arg1, float3 arg2, float4
     ret.mp_norm = arg8;
     ret.inv_v = arg9;
     ret.trt = arg10;
+    ret.jitter = arg11;
     return ret;
+}
+
+WeftHair ZeroValueWeftHair() {
+    return (WeftHair)0;
 }
 
 VertexOutput_vs_hair vs_hair(WeftVertexInput in_1)
@@ -531,30 +525,35 @@ VertexOutput_vs_hair vs_hair(WeftVertexInput in_1)
     const WeftHair _e16 = weft_hair_params((0.0).xxx, _e6, _e9, _e12, _e15);
     h = _e16;
     {
-        h = ConstructWeftHair((0.0).xxx, 0.0, (0.0).xxxx, 0.0, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xxx, (0.0).xx, 0.0, (0.0).xxxx, 0.0);
+        h = ZeroValueWeftHair();
     }
-    float _e47 = h.eta;
-    float _e49 = h.s;
-    float _e52 = h.v.x;
-    float _e53 = scale;
-    float3 _e56 = h.sin2k;
-    float _e58 = h.r_floor;
-    float3 _e61 = h.cos2k;
-    float _e64 = h.blur.x;
-    float3 _e67 = h.mp_norm;
-    float _e70 = h.blur.y;
-    float3 _e73 = h.inv_v;
-    float _e76 = h.trt.x;
-    float4 _e79 = h.trt;
-    float _e82 = h.trt4_;
-    const HairVaryings hairvaryings = ConstructHairVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, float4(_e47, _e49, _e52, _e53), float4(_e56, _e58), float4(_e61, _e64), float4(_e67, _e70), float4(_e73, _e76), float4(_e79.yzw, _e82));
-    const VertexOutput_vs_hair hairvaryings_1 = { hairvaryings.world_position, hairvaryings.world_normal, hairvaryings.world_tangent, hairvaryings.uv0_, hairvaryings.fibre, hairvaryings.sin2k, hairvaryings.cos2k, hairvaryings.mp_norm, hairvaryings.inv_v, hairvaryings.trt, hairvaryings.clip_position };
+    float _e23 = material.anisotropic_direction;
+    float a_2 = radians(_e23);
+    float _e31 = h.eta;
+    float _e33 = h.s;
+    float _e36 = h.v.x;
+    float _e37 = scale;
+    float3 _e40 = h.sin2k;
+    float _e42 = h.r_floor;
+    float3 _e45 = h.cos2k;
+    float _e48 = h.blur.x;
+    float3 _e51 = h.mp_norm;
+    float _e54 = h.blur.y;
+    float3 _e57 = h.inv_v;
+    float _e60 = h.trt.x;
+    float4 _e63 = h.trt;
+    float _e66 = h.trt4_;
+    float _e71 = h.inv_eta;
+    float _e74 = material.strand_density;
+    const float _e75 = hair_noise_period(_e74);
+    const HairVaryings hairvaryings = ConstructHairVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, float4(_e31, _e33, _e36, _e37), float4(_e40, _e42), float4(_e45, _e48), float4(_e51, _e54), float4(_e57, _e60), float4(_e63.yzw, _e66), float4(cos(a_2), sin(a_2), _e71, _e75));
+    const VertexOutput_vs_hair hairvaryings_1 = { hairvaryings.world_position, hairvaryings.world_normal, hairvaryings.world_tangent, hairvaryings.uv0_, hairvaryings.fibre, hairvaryings.sin2k, hairvaryings.cos2k, hairvaryings.mp_norm, hairvaryings.inv_v, hairvaryings.trt, hairvaryings.jitter, hairvaryings.clip_position };
     return hairvaryings_1;
 }
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    HairVaryings in_2 = { fragmentinput_fs_main.clip_position_2, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_3, fragmentinput_fs_main.fibre_1, fragmentinput_fs_main.sin2k_1, fragmentinput_fs_main.cos2k_1, fragmentinput_fs_main.mp_norm_1, fragmentinput_fs_main.inv_v_1, fragmentinput_fs_main.trt_1 };
+    HairVaryings in_2 = { fragmentinput_fs_main.clip_position_2, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_3, fragmentinput_fs_main.fibre_1, fragmentinput_fs_main.sin2k_1, fragmentinput_fs_main.cos2k_1, fragmentinput_fs_main.mp_norm_1, fragmentinput_fs_main.inv_v_1, fragmentinput_fs_main.trt_1, fragmentinput_fs_main.jitter_1 };
     float3 color = (float3)0;
     WeftHairLobes lobes = (WeftHairLobes)0;
 
@@ -570,31 +569,31 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 n_3 = _e19.n;
     const float3x3 _e23 = weft_tangent_frame(n_3, in_2.world_tangent);
     const float3 _e25 = hair_strand(_e23, in_2.uv0_);
-    const float _e27 = hair_jitter(in_2.uv0_);
-    const float3 _e28 = weft_main_light_direction();
-    const float3 _e29 = weft_main_light_radiance();
-    const float3 _e30 = weft_sh_irradiance(n_3);
-    float n_dot_l = dot(n_3, _e28);
+    const float _e28 = hair_jitter(in_2.uv0_, in_2.jitter);
+    const float3 _e29 = weft_main_light_direction();
+    const float3 _e30 = weft_main_light_radiance();
+    const float3 _e31 = weft_sh_irradiance(n_3);
+    float n_dot_l = dot(n_3, _e29);
     {
-        const float3 _e34 = weft_safe_normalize((_e28 + v_1), n_3);
-        float _e37 = material.primary_shift;
-        const float3 _e41 = weft_safe_normalize((_e25 + ((_e37 + _e27) * n_3)), _e25);
-        float _e44 = material.secondary_shift;
-        const float3 _e48 = weft_safe_normalize((_e25 + ((_e44 + _e27) * n_3)), _e25);
-        float4 _e51 = material.primary_color;
-        float _e55 = material.primary_intensity;
-        float _e58 = material.primary_exponent;
-        const float _e59 = hair_kajiya_kay(_e41, _e34, _e58);
-        float3 primary = (_e51.xyz * (_e55 * _e59));
-        float4 _e64 = material.secondary_color;
-        float _e68 = material.secondary_intensity;
-        float _e71 = material.secondary_exponent;
-        const float _e72 = hair_kajiya_kay(_e48, _e34, _e71);
-        float3 secondary = (_e64.xyz * (_e68 * _e72));
-        float3 direct = (((((base + primary) + secondary) * WEFT_INV_PI) * _e29) * saturate(n_dot_l));
-        color = (direct + (_e30 * base));
+        const float3 _e35 = weft_safe_normalize((_e29 + v_1), n_3);
+        float _e38 = material.primary_shift;
+        const float3 _e42 = weft_safe_normalize((_e25 + ((_e38 + _e28) * n_3)), _e25);
+        float _e45 = material.secondary_shift;
+        const float3 _e49 = weft_safe_normalize((_e25 + ((_e45 + _e28) * n_3)), _e25);
+        float4 _e52 = material.primary_color;
+        float _e56 = material.primary_intensity;
+        float _e59 = material.primary_exponent;
+        const float _e60 = hair_kajiya_kay(_e42, _e35, _e59);
+        float3 primary = (_e52.xyz * (_e56 * _e60));
+        float4 _e65 = material.secondary_color;
+        float _e69 = material.secondary_intensity;
+        float _e72 = material.secondary_exponent;
+        const float _e73 = hair_kajiya_kay(_e49, _e35, _e72);
+        float3 secondary = (_e65.xyz * (_e69 * _e73));
+        float3 direct = (((((base + primary) + secondary) * WEFT_INV_PI) * _e30) * saturate(n_dot_l));
+        color = (direct + (_e31 * base));
     }
-    float3 _e84 = color;
-    float3 radiance = clamp(_e84, (0.0).xxx, (65504.0).xxx);
+    float3 _e85 = color;
+    float3 radiance = clamp(_e85, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

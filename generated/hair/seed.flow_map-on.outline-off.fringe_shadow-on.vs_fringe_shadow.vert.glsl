@@ -76,6 +76,7 @@ struct WeftHair {
     float r_floor;
     vec4 trt;
     float trt4_;
+    float inv_eta;
 };
 struct WeftHairLobes {
     vec3 s;
@@ -94,6 +95,7 @@ struct HairVaryings {
     vec4 mp_norm;
     vec4 inv_v;
     vec4 trt;
+    vec4 jitter;
 };
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
@@ -239,7 +241,7 @@ float weft_hair_logistic_scale(float beta_n) {
 }
 
 WeftHair weft_hair_params(vec3 sigma_a, float eta, float beta_m_1, float beta_n_1, float alpha_deg) {
-    WeftHair hair = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0, vec4(0.0), 0.0);
+    WeftHair hair = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0, vec4(0.0), 0.0, 0.0);
     hair.sigma_a = max(sigma_a, vec3(0.0));
     hair.eta = max(eta, 1.0001);
     float _e13 = weft_hair_variance(beta_m_1);
@@ -271,8 +273,14 @@ WeftHair weft_hair_params(vec3 sigma_a, float eta, float beta_m_1, float beta_n_
     float sh_1 = hair.s;
     hair.trt = vec4((-9.2609 + (sh_1 * (65.993 - (107.38 * sh_1)))), (72.357 + (sh_1 * (-624.68 + (1069.8 * sh_1)))), (-153.75 + (sh_1 * (1704.7 - (3127.5 * sh_1)))), (-67.745 + (sh_1 * (-1105.8 + (2706.6 * sh_1)))));
     hair.trt4_ = (239.74 - (430.94 * sh_1));
-    WeftHair _e122 = hair;
-    return _e122;
+    float _e124 = hair.eta;
+    hair.inv_eta = (1.0 / _e124);
+    WeftHair _e127 = hair;
+    return _e127;
+}
+
+float hair_noise_period(float density) {
+    return max(roundEven(density), 1.0);
 }
 
 float hair_hash(uint x_2) {
@@ -281,15 +289,14 @@ float hair_hash(uint x_2) {
     return (float(((word >> 22u) ^ word)) * 2.3283064e-10);
 }
 
-float hair_value_noise(float x_3, float period) {
-    float p = max(roundEven(period), 1.0);
+float hair_value_noise(float x_3, float p) {
     float cell = floor(x_3);
     float f = (x_3 - cell);
     float c0_ = (cell - (p * floor((cell / p))));
     float c1_1 = (((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0));
-    float _e19 = hair_hash(uint(c0_));
-    float _e21 = hair_hash(uint(c1_1));
-    return (mix(_e19, _e21, ((f * f) * (3.0 - (2.0 * f)))) - 0.5);
+    float _e16 = hair_hash(uint(c0_));
+    float _e18 = hair_hash(uint(c1_1));
+    return (mix(_e16, _e18, ((f * f) * (3.0 - (2.0 * f)))) - 0.5);
 }
 
 float hair_kajiya_kay(vec3 t, vec3 h_1, float exponent) {

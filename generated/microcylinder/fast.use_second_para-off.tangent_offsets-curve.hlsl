@@ -648,18 +648,22 @@ float microcylinder_mean_fresnel(float eta)
     return (_e1 + ((1.0 - _e1) / 21.0));
 }
 
+McFastConst ZeroValueMcFastConst() {
+    return (McFastConst)0;
+}
+
 McFastConst microcylinder_fast_const(McThread th_4, float4 heights_1[9])
 {
-    McFastConst k_1 = ConstructMcFastConst((0.0).xxxx, (0.0).xxxx, (0.0).xx);
+    McFastConst k_1 = ZeroValueMcFastConst();
 
     {
         {
-            const McFastConst _e10 = mc_fast_const(th_4, heights_1);
-            k_1 = _e10;
+            const McFastConst _e4 = mc_fast_const(th_4, heights_1);
+            k_1 = _e4;
         }
     }
-    McFastConst _e11 = k_1;
-    const McFastConst mcfastconst_1 = _e11;
+    McFastConst _e5 = k_1;
+    const McFastConst mcfastconst_1 = _e5;
     return mcfastconst_1;
 }
 
@@ -682,7 +686,7 @@ MicrocylinderVaryings ConstructMicrocylinderVaryings(float4 arg0, float3 arg1, f
 
 VertexOutput_vs_microcylinder vs_microcylinder(WeftVertexInput in_)
 {
-    McFastConst k2_ = ConstructMcFastConst((0.0).xxxx, (0.0).xxxx, (0.0).xx);
+    McFastConst k2_ = ZeroValueMcFastConst();
 
     const WeftVaryings _e1 = weft_forward_vertex(in_);
     float4 _e4 = material.thread1_color;
@@ -699,12 +703,12 @@ VertexOutput_vs_microcylinder vs_microcylinder(WeftVertexInput in_)
     const McThread _e39 = microcylinder_thread(_e23.xyz, _e27, _e30, _e33, _e36, (1.0).xxx);
     float4 _e42[9] = material.thread1_curve;
     const McFastConst _e43 = microcylinder_fast_const(_e20, _e42);
-    float4 _e61 = k2_.shape;
-    float4 _e63 = k2_.curve;
-    float2 _e65 = k2_.steps;
-    const float _e67 = microcylinder_mean_fresnel(_e20.eta);
-    const float _e69 = microcylinder_mean_fresnel(_e39.eta);
-    const MicrocylinderVaryings microcylindervaryings = ConstructMicrocylinderVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, _e43.shape, _e43.curve, _e43.steps, _e61, _e63, _e65, float2(_e67, _e69));
+    float4 _e55 = k2_.shape;
+    float4 _e57 = k2_.curve;
+    float2 _e59 = k2_.steps;
+    const float _e61 = microcylinder_mean_fresnel(_e20.eta);
+    const float _e63 = microcylinder_mean_fresnel(_e39.eta);
+    const MicrocylinderVaryings microcylindervaryings = ConstructMicrocylinderVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, _e43.shape, _e43.curve, _e43.steps, _e55, _e57, _e59, float2(_e61, _e63));
     const VertexOutput_vs_microcylinder microcylindervaryings_1 = { microcylindervaryings.world_position, microcylindervaryings.world_normal, microcylindervaryings.world_tangent, microcylindervaryings.uv0_, microcylindervaryings.thread1_shape, microcylindervaryings.thread1_curve, microcylindervaryings.thread1_steps, microcylindervaryings.thread2_shape, microcylindervaryings.thread2_curve, microcylindervaryings.thread2_steps, microcylindervaryings.mean_fresnel, microcylindervaryings.clip_position };
     return microcylindervaryings_1;
 }

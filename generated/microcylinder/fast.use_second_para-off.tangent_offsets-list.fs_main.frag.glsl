@@ -504,12 +504,12 @@ McFastConst microcylinder_fast_const(McThread th_4, vec4 heights[9]) {
     McFastConst k_5 = McFastConst(vec4(0.0), vec4(0.0), vec2(0.0));
     {
         {
-            vec4 _e11 = mc_fast_shape(th_4);
-            k_5.shape = _e11;
+            vec4 _e5 = mc_fast_shape(th_4);
+            k_5.shape = _e5;
         }
     }
-    McFastConst _e12 = k_5;
-    return _e12;
+    McFastConst _e6 = k_5;
+    return _e6;
 }
 
 void main() {

@@ -658,15 +658,15 @@ McFastConst microcylinder_fast_const(
     McThread th_4,
     type_5 heights
 ) {
-    McFastConst k_5 = McFastConst {metal::float4(0.0), metal::float4(0.0), metal::float2(0.0)};
+    McFastConst k_5 = McFastConst {};
     {
         {
-            metal::float4 _e11 = mc_fast_shape(th_4);
-            k_5.shape = _e11;
+            metal::float4 _e5 = mc_fast_shape(th_4);
+            k_5.shape = _e5;
         }
     }
-    McFastConst _e12 = k_5;
-    return _e12;
+    McFastConst _e6 = k_5;
+    return _e6;
 }
 
 struct vs_microcylinderInput {
@@ -696,7 +696,7 @@ vertex vs_microcylinderOutput vs_microcylinder(
 , constant WeftMaterial& material [[buffer(1)]]
 ) {
     const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_1, varyings.uv0_ };
-    McFastConst k2_ = McFastConst {metal::float4(0.0), metal::float4(0.0), metal::float2(0.0)};
+    McFastConst k2_ = McFastConst {};
     WeftVaryings _e1 = weft_forward_vertex(in, weft_frame, weft_object);
     metal::float4 _e4 = material.thread1_color;
     float _e8 = material.thread1_ior;
@@ -712,12 +712,12 @@ vertex vs_microcylinderOutput vs_microcylinder(
     McThread _e39 = microcylinder_thread(_e23.xyz, _e27, _e30, _e33, _e36, metal::float3(1.0));
     type_5 _e42 = material.thread1_curve;
     McFastConst _e43 = microcylinder_fast_const(_e20, _e42);
-    metal::float4 _e61 = k2_.shape;
-    metal::float4 _e63 = k2_.curve;
-    metal::float2 _e65 = k2_.steps;
-    float _e67 = microcylinder_mean_fresnel(_e20.eta);
-    float _e69 = microcylinder_mean_fresnel(_e39.eta);
-    const auto _tmp = MicrocylinderVaryings {_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, {}, _e43.shape, _e43.curve, _e43.steps, {}, _e61, _e63, _e65, metal::float2(_e67, _e69)};
+    metal::float4 _e55 = k2_.shape;
+    metal::float4 _e57 = k2_.curve;
+    metal::float2 _e59 = k2_.steps;
+    float _e61 = microcylinder_mean_fresnel(_e20.eta);
+    float _e63 = microcylinder_mean_fresnel(_e39.eta);
+    const auto _tmp = MicrocylinderVaryings {_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, {}, _e43.shape, _e43.curve, _e43.steps, {}, _e55, _e57, _e59, metal::float2(_e61, _e63)};
     return vs_microcylinderOutput { _tmp.clip_position, _tmp.world_position, _tmp.world_normal, _tmp.world_tangent, _tmp.uv0_, _tmp.thread1_shape, _tmp.thread1_curve, _tmp.thread1_steps, _tmp.thread2_shape, _tmp.thread2_curve, _tmp.thread2_steps, _tmp.mean_fresnel };
 }
 

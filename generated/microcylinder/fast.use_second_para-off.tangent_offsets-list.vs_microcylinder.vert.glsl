@@ -528,12 +528,12 @@ McFastConst microcylinder_fast_const(McThread th_4, vec4 heights[9]) {
     McFastConst k_5 = McFastConst(vec4(0.0), vec4(0.0), vec2(0.0));
     {
         {
-            vec4 _e11 = mc_fast_shape(th_4);
-            k_5.shape = _e11;
+            vec4 _e5 = mc_fast_shape(th_4);
+            k_5.shape = _e5;
         }
     }
-    McFastConst _e12 = k_5;
-    return _e12;
+    McFastConst _e6 = k_5;
+    return _e6;
 }
 
 void main() {
@@ -554,12 +554,12 @@ void main() {
     McThread _e39 = microcylinder_thread(_e23.xyz, _e27, _e30, _e33, _e36, vec3(1.0));
     vec4 _e42[9] = _group_1_binding_0_vs.thread1_curve;
     McFastConst _e43 = microcylinder_fast_const(_e20, _e42);
-    vec4 _e61 = k2_.shape;
-    vec4 _e63 = k2_.curve;
-    vec2 _e65 = k2_.steps;
-    float _e67 = microcylinder_mean_fresnel(_e20.eta);
-    float _e69 = microcylinder_mean_fresnel(_e39.eta);
-    MicrocylinderVaryings _tmp_return = MicrocylinderVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, _e43.shape, _e43.curve, _e43.steps, _e61, _e63, _e65, vec2(_e67, _e69));
+    vec4 _e55 = k2_.shape;
+    vec4 _e57 = k2_.curve;
+    vec2 _e59 = k2_.steps;
+    float _e61 = microcylinder_mean_fresnel(_e20.eta);
+    float _e63 = microcylinder_mean_fresnel(_e39.eta);
+    MicrocylinderVaryings _tmp_return = MicrocylinderVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, _e43.shape, _e43.curve, _e43.steps, _e55, _e57, _e59, vec2(_e61, _e63));
     gl_Position = _tmp_return.clip_position;
     _vs2fs_location0 = _tmp_return.world_position;
     _vs2fs_location1 = _tmp_return.world_normal;

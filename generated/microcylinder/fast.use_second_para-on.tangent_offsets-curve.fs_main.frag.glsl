@@ -471,12 +471,12 @@ McFastConst microcylinder_fast_const(McThread th_4, vec4 heights_1[9]) {
     McFastConst k_1 = McFastConst(vec4(0.0), vec4(0.0), vec2(0.0));
     {
         {
-            McFastConst _e10 = mc_fast_const(th_4, heights_1);
-            k_1 = _e10;
+            McFastConst _e4 = mc_fast_const(th_4, heights_1);
+            k_1 = _e4;
         }
     }
-    McFastConst _e11 = k_1;
-    return _e11;
+    McFastConst _e5 = k_1;
+    return _e5;
 }
 
 void main() {

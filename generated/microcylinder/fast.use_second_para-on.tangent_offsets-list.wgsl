@@ -528,21 +528,21 @@ fn microcylinder_mean_fresnel(eta: f32) -> f32 {
 }
 
 fn microcylinder_fast_const(th_4: McThread, heights: array<vec4<f32>, 9>) -> McFastConst {
-    var k_5: McFastConst = McFastConst(vec4(0f), vec4(0f), vec2(0f));
+    var k_5: McFastConst = McFastConst();
 
     {
         {
-            let _e11 = mc_fast_shape(th_4);
-            k_5.shape = _e11;
+            let _e5 = mc_fast_shape(th_4);
+            k_5.shape = _e5;
         }
     }
-    let _e12 = k_5;
-    return _e12;
+    let _e6 = k_5;
+    return _e6;
 }
 
 @vertex 
 fn vs_microcylinder(in: WeftVertexInput) -> MicrocylinderVaryings {
-    var k2_: McFastConst = McFastConst(vec4(0f), vec4(0f), vec2(0f));
+    var k2_: McFastConst = McFastConst();
 
     let _e1 = weft_forward_vertex(in);
     let _e4 = material.thread1_color;
@@ -560,16 +560,16 @@ fn vs_microcylinder(in: WeftVertexInput) -> MicrocylinderVaryings {
     let _e42 = material.thread1_curve;
     let _e43 = microcylinder_fast_const(_e20, _e42);
     {
-        let _e54 = material.thread2_curve;
-        let _e55 = microcylinder_fast_const(_e39, _e54);
-        k2_ = _e55;
+        let _e48 = material.thread2_curve;
+        let _e49 = microcylinder_fast_const(_e39, _e48);
+        k2_ = _e49;
     }
-    let _e65 = k2_.shape;
-    let _e67 = k2_.curve;
-    let _e69 = k2_.steps;
-    let _e71 = microcylinder_mean_fresnel(_e20.eta);
-    let _e73 = microcylinder_mean_fresnel(_e39.eta);
-    return MicrocylinderVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, _e43.shape, _e43.curve, _e43.steps, _e65, _e67, _e69, vec2<f32>(_e71, _e73));
+    let _e59 = k2_.shape;
+    let _e61 = k2_.curve;
+    let _e63 = k2_.steps;
+    let _e65 = microcylinder_mean_fresnel(_e20.eta);
+    let _e67 = microcylinder_mean_fresnel(_e39.eta);
+    return MicrocylinderVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, _e43.shape, _e43.curve, _e43.steps, _e59, _e61, _e63, vec2<f32>(_e65, _e67));
 }
 
 @fragment 

@@ -469,8 +469,8 @@ float microcylinder_mean_fresnel(float eta_2) {
 
 McFastConst microcylinder_fast_const(McThread th_3, vec4 heights_1[9]) {
     McFastConst k = McFastConst(vec4(0.0), vec4(0.0), vec2(0.0));
-    McFastConst _e10 = k;
-    return _e10;
+    McFastConst _e4 = k;
+    return _e4;
 }
 
 void main() {

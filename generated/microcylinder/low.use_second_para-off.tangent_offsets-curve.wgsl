@@ -497,15 +497,15 @@ fn microcylinder_mean_fresnel(eta_2: f32) -> f32 {
 }
 
 fn microcylinder_fast_const(th_3: McThread, heights_1: array<vec4<f32>, 9>) -> McFastConst {
-    var k: McFastConst = McFastConst(vec4(0f), vec4(0f), vec2(0f));
+    var k: McFastConst = McFastConst();
 
-    let _e10 = k;
-    return _e10;
+    let _e4 = k;
+    return _e4;
 }
 
 @vertex 
 fn vs_microcylinder(in: WeftVertexInput) -> MicrocylinderVaryings {
-    var k2_: McFastConst = McFastConst(vec4(0f), vec4(0f), vec2(0f));
+    var k2_: McFastConst = McFastConst();
 
     let _e1 = weft_forward_vertex(in);
     let _e4 = material.thread1_color;
@@ -522,12 +522,12 @@ fn vs_microcylinder(in: WeftVertexInput) -> MicrocylinderVaryings {
     let _e39 = microcylinder_thread(_e23.xyz, _e27, _e30, _e33, _e36, vec3(1f));
     let _e42 = material.thread1_curve;
     let _e43 = microcylinder_fast_const(_e20, _e42);
-    let _e61 = k2_.shape;
-    let _e63 = k2_.curve;
-    let _e65 = k2_.steps;
-    let _e67 = microcylinder_mean_fresnel(_e20.eta);
-    let _e69 = microcylinder_mean_fresnel(_e39.eta);
-    return MicrocylinderVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, _e43.shape, _e43.curve, _e43.steps, _e61, _e63, _e65, vec2<f32>(_e67, _e69));
+    let _e55 = k2_.shape;
+    let _e57 = k2_.curve;
+    let _e59 = k2_.steps;
+    let _e61 = microcylinder_mean_fresnel(_e20.eta);
+    let _e63 = microcylinder_mean_fresnel(_e39.eta);
+    return MicrocylinderVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, _e43.shape, _e43.curve, _e43.steps, _e55, _e57, _e59, vec2<f32>(_e61, _e63));
 }
 
 @fragment 

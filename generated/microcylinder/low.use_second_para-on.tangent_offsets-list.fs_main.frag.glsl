@@ -503,8 +503,8 @@ float microcylinder_mean_fresnel(float eta_2) {
 
 McFastConst microcylinder_fast_const(McThread th_4, vec4 heights[9]) {
     McFastConst k_5 = McFastConst(vec4(0.0), vec4(0.0), vec2(0.0));
-    McFastConst _e10 = k_5;
-    return _e10;
+    McFastConst _e4 = k_5;
+    return _e4;
 }
 
 void main() {

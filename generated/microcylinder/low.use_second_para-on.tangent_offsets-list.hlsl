@@ -696,20 +696,16 @@ float microcylinder_mean_fresnel(float eta_2)
     return (_e1 + ((1.0 - _e1) / 21.0));
 }
 
-McFastConst ConstructMcFastConst(float4 arg0, float4 arg1, float2 arg2) {
-    McFastConst ret = (McFastConst)0;
-    ret.shape = arg0;
-    ret.curve = arg1;
-    ret.steps = arg2;
-    return ret;
+McFastConst ZeroValueMcFastConst() {
+    return (McFastConst)0;
 }
 
 McFastConst microcylinder_fast_const(McThread th_4, float4 heights[9])
 {
-    McFastConst k_5 = ConstructMcFastConst((0.0).xxxx, (0.0).xxxx, (0.0).xx);
+    McFastConst k_5 = ZeroValueMcFastConst();
 
-    McFastConst _e10 = k_5;
-    const McFastConst mcfastconst = _e10;
+    McFastConst _e4 = k_5;
+    const McFastConst mcfastconst = _e4;
     return mcfastconst;
 }
 
@@ -732,7 +728,7 @@ MicrocylinderVaryings ConstructMicrocylinderVaryings(float4 arg0, float3 arg1, f
 
 VertexOutput_vs_microcylinder vs_microcylinder(WeftVertexInput in_)
 {
-    McFastConst k2_ = ConstructMcFastConst((0.0).xxxx, (0.0).xxxx, (0.0).xx);
+    McFastConst k2_ = ZeroValueMcFastConst();
 
     const WeftVaryings _e1 = weft_forward_vertex(in_);
     float4 _e4 = material.thread1_color;
@@ -750,16 +746,16 @@ VertexOutput_vs_microcylinder vs_microcylinder(WeftVertexInput in_)
     float4 _e42[9] = material.thread1_curve;
     const McFastConst _e43 = microcylinder_fast_const(_e20, _e42);
     {
-        float4 _e54[9] = material.thread2_curve;
-        const McFastConst _e55 = microcylinder_fast_const(_e39, _e54);
-        k2_ = _e55;
+        float4 _e48[9] = material.thread2_curve;
+        const McFastConst _e49 = microcylinder_fast_const(_e39, _e48);
+        k2_ = _e49;
     }
-    float4 _e65 = k2_.shape;
-    float4 _e67 = k2_.curve;
-    float2 _e69 = k2_.steps;
-    const float _e71 = microcylinder_mean_fresnel(_e20.eta);
-    const float _e73 = microcylinder_mean_fresnel(_e39.eta);
-    const MicrocylinderVaryings microcylindervaryings = ConstructMicrocylinderVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, _e43.shape, _e43.curve, _e43.steps, _e65, _e67, _e69, float2(_e71, _e73));
+    float4 _e59 = k2_.shape;
+    float4 _e61 = k2_.curve;
+    float2 _e63 = k2_.steps;
+    const float _e65 = microcylinder_mean_fresnel(_e20.eta);
+    const float _e67 = microcylinder_mean_fresnel(_e39.eta);
+    const MicrocylinderVaryings microcylindervaryings = ConstructMicrocylinderVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, _e43.shape, _e43.curve, _e43.steps, _e59, _e61, _e63, float2(_e65, _e67));
     const VertexOutput_vs_microcylinder microcylindervaryings_1 = { microcylindervaryings.world_position, microcylindervaryings.world_normal, microcylindervaryings.world_tangent, microcylindervaryings.uv0_, microcylindervaryings.thread1_shape, microcylindervaryings.thread1_curve, microcylindervaryings.thread1_steps, microcylindervaryings.thread2_shape, microcylindervaryings.thread2_curve, microcylindervaryings.thread2_steps, microcylindervaryings.mean_fresnel, microcylindervaryings.clip_position };
     return microcylindervaryings_1;
 }

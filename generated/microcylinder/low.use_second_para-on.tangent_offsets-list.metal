@@ -650,9 +650,9 @@ McFastConst microcylinder_fast_const(
     McThread th_4,
     type_5 heights
 ) {
-    McFastConst k_5 = McFastConst {metal::float4(0.0), metal::float4(0.0), metal::float2(0.0)};
-    McFastConst _e10 = k_5;
-    return _e10;
+    McFastConst k_5 = McFastConst {};
+    McFastConst _e4 = k_5;
+    return _e4;
 }
 
 struct vs_microcylinderInput {
@@ -682,7 +682,7 @@ vertex vs_microcylinderOutput vs_microcylinder(
 , constant WeftMaterial& material [[buffer(1)]]
 ) {
     const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_1, varyings.uv0_ };
-    McFastConst k2_ = McFastConst {metal::float4(0.0), metal::float4(0.0), metal::float2(0.0)};
+    McFastConst k2_ = McFastConst {};
     WeftVaryings _e1 = weft_forward_vertex(in, weft_frame, weft_object);
     metal::float4 _e4 = material.thread1_color;
     float _e8 = material.thread1_ior;
@@ -699,16 +699,16 @@ vertex vs_microcylinderOutput vs_microcylinder(
     type_5 _e42 = material.thread1_curve;
     McFastConst _e43 = microcylinder_fast_const(_e20, _e42);
     {
-        type_5 _e54 = material.thread2_curve;
-        McFastConst _e55 = microcylinder_fast_const(_e39, _e54);
-        k2_ = _e55;
+        type_5 _e48 = material.thread2_curve;
+        McFastConst _e49 = microcylinder_fast_const(_e39, _e48);
+        k2_ = _e49;
     }
-    metal::float4 _e65 = k2_.shape;
-    metal::float4 _e67 = k2_.curve;
-    metal::float2 _e69 = k2_.steps;
-    float _e71 = microcylinder_mean_fresnel(_e20.eta);
-    float _e73 = microcylinder_mean_fresnel(_e39.eta);
-    const auto _tmp = MicrocylinderVaryings {_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, {}, _e43.shape, _e43.curve, _e43.steps, {}, _e65, _e67, _e69, metal::float2(_e71, _e73)};
+    metal::float4 _e59 = k2_.shape;
+    metal::float4 _e61 = k2_.curve;
+    metal::float2 _e63 = k2_.steps;
+    float _e65 = microcylinder_mean_fresnel(_e20.eta);
+    float _e67 = microcylinder_mean_fresnel(_e39.eta);
+    const auto _tmp = MicrocylinderVaryings {_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, {}, _e43.shape, _e43.curve, _e43.steps, {}, _e59, _e61, _e63, metal::float2(_e65, _e67)};
     return vs_microcylinderOutput { _tmp.clip_position, _tmp.world_position, _tmp.world_normal, _tmp.world_tangent, _tmp.uv0_, _tmp.thread1_shape, _tmp.thread1_curve, _tmp.thread1_steps, _tmp.thread2_shape, _tmp.thread2_curve, _tmp.thread2_steps, _tmp.mean_fresnel };
 }
 

@@ -527,8 +527,8 @@ float microcylinder_mean_fresnel(float eta_2) {
 
 McFastConst microcylinder_fast_const(McThread th_4, vec4 heights[9]) {
     McFastConst k_5 = McFastConst(vec4(0.0), vec4(0.0), vec2(0.0));
-    McFastConst _e10 = k_5;
-    return _e10;
+    McFastConst _e4 = k_5;
+    return _e4;
 }
 
 void main() {
@@ -550,16 +550,16 @@ void main() {
     vec4 _e42[9] = _group_1_binding_0_vs.thread1_curve;
     McFastConst _e43 = microcylinder_fast_const(_e20, _e42);
     {
-        vec4 _e54[9] = _group_1_binding_0_vs.thread2_curve;
-        McFastConst _e55 = microcylinder_fast_const(_e39, _e54);
-        k2_ = _e55;
+        vec4 _e48[9] = _group_1_binding_0_vs.thread2_curve;
+        McFastConst _e49 = microcylinder_fast_const(_e39, _e48);
+        k2_ = _e49;
     }
-    vec4 _e65 = k2_.shape;
-    vec4 _e67 = k2_.curve;
-    vec2 _e69 = k2_.steps;
-    float _e71 = microcylinder_mean_fresnel(_e20.eta);
-    float _e73 = microcylinder_mean_fresnel(_e39.eta);
-    MicrocylinderVaryings _tmp_return = MicrocylinderVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, _e43.shape, _e43.curve, _e43.steps, _e65, _e67, _e69, vec2(_e71, _e73));
+    vec4 _e59 = k2_.shape;
+    vec4 _e61 = k2_.curve;
+    vec2 _e63 = k2_.steps;
+    float _e65 = microcylinder_mean_fresnel(_e20.eta);
+    float _e67 = microcylinder_mean_fresnel(_e39.eta);
+    MicrocylinderVaryings _tmp_return = MicrocylinderVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, _e43.shape, _e43.curve, _e43.steps, _e59, _e61, _e63, vec2(_e65, _e67));
     gl_Position = _tmp_return.clip_position;
     _vs2fs_location0 = _tmp_return.world_position;
     _vs2fs_location1 = _tmp_return.world_normal;

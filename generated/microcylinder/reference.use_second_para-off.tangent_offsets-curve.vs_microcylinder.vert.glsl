@@ -174,9 +174,10 @@ float weft_f_dielectric(float cos_i, float eta) {
     float g = sqrt(max(g2_, 0.0));
     float gmc = (g - c);
     float gpc = max((g + c), 1e-7);
-    float a_1 = (gmc / gpc);
-    float b_1 = (((c * gpc) - 1.0) / max(((c * gmc) + 1.0), 1e-7));
-    float f = clamp((((0.5 * a_1) * a_1) * (1.0 + (b_1 * b_1))), 0.0, 1.0);
+    float b_den = max(((c * gmc) + 1.0), 1e-7);
+    float b_num = ((c * gpc) - 1.0);
+    float inv = (1.0 / (gpc * b_den));
+    float f = clamp(((((0.5 * gmc) * gmc) * ((b_den * b_den) + (b_num * b_num))) * (inv * inv)), 0.0, 1.0);
     return ((g2_ < 0.0) ? 1.0 : f);
 }
 
@@ -261,8 +262,8 @@ mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
     vec3 _e13 = weft_any_perpendicular(n_2);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_2 = (cross(n_2, t) * s_1);
-    return mat3x3(t, b_2, n_2);
+    vec3 b_1 = (cross(n_2, t) * s_1);
+    return mat3x3(t, b_1, n_2);
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
@@ -413,8 +414,8 @@ float microcylinder_mean_fresnel(float eta_1) {
 
 McFastConst microcylinder_fast_const(McThread th_2, vec4 heights_1[9]) {
     McFastConst k_1 = McFastConst(vec4(0.0), vec4(0.0), vec2(0.0));
-    McFastConst _e10 = k_1;
-    return _e10;
+    McFastConst _e4 = k_1;
+    return _e4;
 }
 
 void main() {
@@ -435,12 +436,12 @@ void main() {
     McThread _e39 = microcylinder_thread(_e23.xyz, _e27, _e30, _e33, _e36, vec3(1.0));
     vec4 _e42[9] = _group_1_binding_0_vs.thread1_curve;
     McFastConst _e43 = microcylinder_fast_const(_e20, _e42);
-    vec4 _e61 = k2_.shape;
-    vec4 _e63 = k2_.curve;
-    vec2 _e65 = k2_.steps;
-    float _e67 = microcylinder_mean_fresnel(_e20.eta);
-    float _e69 = microcylinder_mean_fresnel(_e39.eta);
-    MicrocylinderVaryings _tmp_return = MicrocylinderVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, _e43.shape, _e43.curve, _e43.steps, _e61, _e63, _e65, vec2(_e67, _e69));
+    vec4 _e55 = k2_.shape;
+    vec4 _e57 = k2_.curve;
+    vec2 _e59 = k2_.steps;
+    float _e61 = microcylinder_mean_fresnel(_e20.eta);
+    float _e63 = microcylinder_mean_fresnel(_e39.eta);
+    MicrocylinderVaryings _tmp_return = MicrocylinderVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, _e43.shape, _e43.curve, _e43.steps, _e55, _e57, _e59, vec2(_e61, _e63));
     gl_Position = _tmp_return.clip_position;
     _vs2fs_location0 = _tmp_return.world_position;
     _vs2fs_location1 = _tmp_return.world_normal;

@@ -171,9 +171,10 @@ float weft_f_dielectric(float cos_i, float eta) {
     float g = sqrt(max(g2_, 0.0));
     float gmc = (g - c);
     float gpc = max((g + c), 1e-7);
-    float a_2 = (gmc / gpc);
-    float b_2 = (((c * gpc) - 1.0) / max(((c * gmc) + 1.0), 1e-7));
-    float f = clamp((((0.5 * a_2) * a_2) * (1.0 + (b_2 * b_2))), 0.0, 1.0);
+    float b_den = max(((c * gmc) + 1.0), 1e-7);
+    float b_num = ((c * gpc) - 1.0);
+    float inv = (1.0 / (gpc * b_den));
+    float f = clamp(((((0.5 * gmc) * gmc) * ((b_den * b_den) + (b_num * b_num))) * (inv * inv)), 0.0, 1.0);
     return ((g2_ < 0.0) ? 1.0 : f);
 }
 
@@ -237,8 +238,8 @@ mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
     vec3 _e13 = weft_any_perpendicular(n_2);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_3 = (cross(n_2, t) * s_1);
-    return mat3x3(t, b_3, n_2);
+    vec3 b_2 = (cross(n_2, t) * s_1);
+    return mat3x3(t, b_2, n_2);
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
@@ -327,8 +328,8 @@ vec4 mc_thread_list_reference(McFrame fr_1, vec3 wi_2, vec3 wr_2, McThread th_1,
     int n_3 = min(max(count, 1), MC_MAX_OFFSETS);
     McPsi _e11 = mc_psi_reference(fr_1.v, wi_2, wr_2);
     if ((n_3 == 1)) {
-        float a_3 = (offsets_a.x * MC_DEG);
-        vec4 _e19 = mc_lobe_reference(fr_1, _e11, wi_2, wr_2, cos(a_3), sin(a_3), th_1);
+        float a_2 = (offsets_a.x * MC_DEG);
+        vec4 _e19 = mc_lobe_reference(fr_1, _e11, wi_2, wr_2, cos(a_2), sin(a_2), th_1);
         return _e19;
     }
     bool loop_init = true;
@@ -366,9 +367,9 @@ vec4 mc_thread_list_reference(McFrame fr_1, vec3 wi_2, vec3 wr_2, McThread th_1,
                 }
                 {
                     int _e53 = j;
-                    float a_4 = (mix(_e30, _e34, ((float(_e53) + 0.5) / m)) * MC_DEG);
+                    float a_3 = (mix(_e30, _e34, ((float(_e53) + 0.5) / m)) * MC_DEG);
                     vec4 _e61 = seg;
-                    vec4 _e64 = mc_lobe_reference(fr_1, _e11, wi_2, wr_2, cos(a_4), sin(a_4), th_1);
+                    vec4 _e64 = mc_lobe_reference(fr_1, _e11, wi_2, wr_2, cos(a_3), sin(a_3), th_1);
                     seg = (_e61 + _e64);
                 }
             }
@@ -415,8 +416,8 @@ float microcylinder_mean_fresnel(float eta_1) {
 
 McFastConst microcylinder_fast_const(McThread th_2, vec4 heights[9]) {
     McFastConst k_2 = McFastConst(vec4(0.0), vec4(0.0), vec2(0.0));
-    McFastConst _e10 = k_2;
-    return _e10;
+    McFastConst _e4 = k_2;
+    return _e4;
 }
 
 void main() {
@@ -450,11 +451,11 @@ void main() {
     vec3 n_4 = _e65.n;
     mat3x3 _e69 = weft_tangent_frame(n_4, in_1.world_tangent);
     vec3 t_1 = _e69[0];
-    vec3 b_4 = _e69[1];
+    vec3 b_3 = _e69[1];
     vec3 _e79 = weft_safe_normalize((v_raw + (n_4 * max((0.001 - dot(n_4, v_raw)), 0.0))), n_4);
     vec3 _e80 = weft_main_light_direction();
-    McFrame warp = McFrame(t_1, b_4, n_4);
-    McFrame weft = McFrame(b_4, t_1, n_4);
+    McFrame warp = McFrame(t_1, b_3, n_4);
+    McFrame weft = McFrame(b_3, t_1, n_4);
     {
         {
             vec4 _e91 = _group_1_binding_0_fs.thread1_offsets_a;

@@ -227,9 +227,10 @@ float weft_f_dielectric(float cos_i, float eta)
     float g = sqrt(max(g2_, 0.0));
     float gmc = (g - c);
     float gpc = max((g + c), 1e-7);
-    float a_2 = (gmc / gpc);
-    float b_2 = (((c * gpc) - 1.0) / max(((c * gmc) + 1.0), 1e-7));
-    float f = saturate((((0.5 * a_2) * a_2) * (1.0 + (b_2 * b_2))));
+    float b_den = max(((c * gmc) + 1.0), 1e-7);
+    float b_num = ((c * gpc) - 1.0);
+    float inv = (1.0 / (gpc * b_den));
+    float f = saturate(((((0.5 * gmc) * gmc) * ((b_den * b_den) + (b_num * b_num))) * (inv * inv)));
     return ((g2_ < 0.0) ? 1.0 : f);
 }
 
@@ -333,8 +334,8 @@ float3x3 weft_tangent_frame(float3 n_2, float4 tangent)
     const float3 _e13 = weft_any_perpendicular(n_2);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_3 = (cross(n_2, t) * s_1);
-    return float3x3(t, b_3, n_2);
+    float3 b_2 = (cross(n_2, t) * s_1);
+    return float3x3(t, b_2, n_2);
 }
 
 float2 weft_transform_uv(float2 uv, float4 st)
@@ -446,8 +447,8 @@ float4 mc_thread_list_reference(McFrame fr_1, float3 wi_2, float3 wr_2, McThread
     int n_3 = clamp(count, int(1), MC_MAX_OFFSETS);
     const McPsi _e11 = mc_psi_reference(fr_1.v, wi_2, wr_2);
     if ((n_3 == int(1))) {
-        float a_3 = (offsets_a.x * MC_DEG);
-        const float4 _e19 = mc_lobe_reference(fr_1, _e11, wi_2, wr_2, cos(a_3), sin(a_3), th_1);
+        float a_2 = (offsets_a.x * MC_DEG);
+        const float4 _e19 = mc_lobe_reference(fr_1, _e11, wi_2, wr_2, cos(a_2), sin(a_2), th_1);
         return _e19;
     }
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
@@ -491,9 +492,9 @@ float4 mc_thread_list_reference(McFrame fr_1, float3 wi_2, float3 wr_2, McThread
                 }
                 {
                     int _e53 = j;
-                    float a_4 = (lerp(_e30, _e34, ((float(_e53) + 0.5) / m)) * MC_DEG);
+                    float a_3 = (lerp(_e30, _e34, ((float(_e53) + 0.5) / m)) * MC_DEG);
                     float4 _e61 = seg;
-                    const float4 _e64 = mc_lobe_reference(fr_1, _e11, wi_2, wr_2, cos(a_4), sin(a_4), th_1);
+                    const float4 _e64 = mc_lobe_reference(fr_1, _e11, wi_2, wr_2, cos(a_3), sin(a_3), th_1);
                     seg = (_e61 + _e64);
                 }
             }
@@ -553,20 +554,16 @@ float microcylinder_mean_fresnel(float eta_1)
     return (_e1 + ((1.0 - _e1) / 21.0));
 }
 
-McFastConst ConstructMcFastConst(float4 arg0, float4 arg1, float2 arg2) {
-    McFastConst ret = (McFastConst)0;
-    ret.shape = arg0;
-    ret.curve = arg1;
-    ret.steps = arg2;
-    return ret;
+McFastConst ZeroValueMcFastConst() {
+    return (McFastConst)0;
 }
 
 McFastConst microcylinder_fast_const(McThread th_2, float4 heights[9])
 {
-    McFastConst k_2 = ConstructMcFastConst((0.0).xxxx, (0.0).xxxx, (0.0).xx);
+    McFastConst k_2 = ZeroValueMcFastConst();
 
-    McFastConst _e10 = k_2;
-    const McFastConst mcfastconst = _e10;
+    McFastConst _e4 = k_2;
+    const McFastConst mcfastconst = _e4;
     return mcfastconst;
 }
 
@@ -589,7 +586,7 @@ MicrocylinderVaryings ConstructMicrocylinderVaryings(float4 arg0, float3 arg1, f
 
 VertexOutput_vs_microcylinder vs_microcylinder(WeftVertexInput in_)
 {
-    McFastConst k2_ = ConstructMcFastConst((0.0).xxxx, (0.0).xxxx, (0.0).xx);
+    McFastConst k2_ = ZeroValueMcFastConst();
 
     const WeftVaryings _e1 = weft_forward_vertex(in_);
     float4 _e4 = material.thread1_color;
@@ -606,12 +603,12 @@ VertexOutput_vs_microcylinder vs_microcylinder(WeftVertexInput in_)
     const McThread _e39 = microcylinder_thread(_e23.xyz, _e27, _e30, _e33, _e36, (1.0).xxx);
     float4 _e42[9] = material.thread1_curve;
     const McFastConst _e43 = microcylinder_fast_const(_e20, _e42);
-    float4 _e61 = k2_.shape;
-    float4 _e63 = k2_.curve;
-    float2 _e65 = k2_.steps;
-    const float _e67 = microcylinder_mean_fresnel(_e20.eta);
-    const float _e69 = microcylinder_mean_fresnel(_e39.eta);
-    const MicrocylinderVaryings microcylindervaryings = ConstructMicrocylinderVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, _e43.shape, _e43.curve, _e43.steps, _e61, _e63, _e65, float2(_e67, _e69));
+    float4 _e55 = k2_.shape;
+    float4 _e57 = k2_.curve;
+    float2 _e59 = k2_.steps;
+    const float _e61 = microcylinder_mean_fresnel(_e20.eta);
+    const float _e63 = microcylinder_mean_fresnel(_e39.eta);
+    const MicrocylinderVaryings microcylindervaryings = ConstructMicrocylinderVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, _e43.shape, _e43.curve, _e43.steps, _e55, _e57, _e59, float2(_e61, _e63));
     const VertexOutput_vs_microcylinder microcylindervaryings_1 = { microcylindervaryings.world_position, microcylindervaryings.world_normal, microcylindervaryings.world_tangent, microcylindervaryings.uv0_, microcylindervaryings.thread1_shape, microcylindervaryings.thread1_curve, microcylindervaryings.thread1_steps, microcylindervaryings.thread2_shape, microcylindervaryings.thread2_curve, microcylindervaryings.thread2_steps, microcylindervaryings.mean_fresnel, microcylindervaryings.clip_position };
     return microcylindervaryings_1;
 }
@@ -657,11 +654,11 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 n_4 = _e65.n;
     const float3x3 _e69 = weft_tangent_frame(n_4, in_1.world_tangent);
     float3 t_1 = _e69[0];
-    float3 b_4 = _e69[1];
+    float3 b_3 = _e69[1];
     const float3 _e79 = weft_safe_normalize((v_raw + (n_4 * max((0.001 - dot(n_4, v_raw)), 0.0))), n_4);
     const float3 _e80 = weft_main_light_direction();
-    McFrame warp = ConstructMcFrame(t_1, b_4, n_4);
-    McFrame weft = ConstructMcFrame(b_4, t_1, n_4);
+    McFrame warp = ConstructMcFrame(t_1, b_3, n_4);
+    McFrame weft = ConstructMcFrame(b_3, t_1, n_4);
     {
         {
             float4 _e91 = material.thread1_offsets_a;

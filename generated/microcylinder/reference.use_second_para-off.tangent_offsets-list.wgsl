@@ -173,9 +173,10 @@ fn weft_f_dielectric(cos_i: f32, eta: f32) -> f32 {
     let g = sqrt(max(g2_, 0f));
     let gmc = (g - c);
     let gpc = max((g + c), 0.0000001f);
-    let a_2 = (gmc / gpc);
-    let b_2 = (((c * gpc) - 1f) / max(((c * gmc) + 1f), 0.0000001f));
-    let f = saturate((((0.5f * a_2) * a_2) * (1f + (b_2 * b_2))));
+    let b_den = max(((c * gmc) + 1f), 0.0000001f);
+    let b_num = ((c * gpc) - 1f);
+    let inv = (1f / (gpc * b_den));
+    let f = saturate(((((0.5f * gmc) * gmc) * ((b_den * b_den) + (b_num * b_num))) * (inv * inv)));
     return select(f, 1f, (g2_ < 0f));
 }
 
@@ -262,8 +263,8 @@ fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let _e13 = weft_any_perpendicular(n_2);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_3 = (cross(n_2, t) * s_1);
-    return mat3x3<f32>(t, b_3, n_2);
+    let b_2 = (cross(n_2, t) * s_1);
+    return mat3x3<f32>(t, b_2, n_2);
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -354,8 +355,8 @@ fn mc_thread_list_reference(fr_1: McFrame, wi_2: vec3<f32>, wr_2: vec3<f32>, th_
     let n_3 = clamp(count, 1i, MC_MAX_OFFSETS);
     let _e11 = mc_psi_reference(fr_1.v, wi_2, wr_2);
     if (n_3 == 1i) {
-        let a_3 = (offsets_a.x * MC_DEG);
-        let _e19 = mc_lobe_reference(fr_1, _e11, wi_2, wr_2, cos(a_3), sin(a_3), th_1);
+        let a_2 = (offsets_a.x * MC_DEG);
+        let _e19 = mc_lobe_reference(fr_1, _e11, wi_2, wr_2, cos(a_2), sin(a_2), th_1);
         return _e19;
     }
     loop {
@@ -381,9 +382,9 @@ fn mc_thread_list_reference(fr_1: McFrame, wi_2: vec3<f32>, wr_2: vec3<f32>, th_
                 }
                 {
                     let _e53 = j;
-                    let a_4 = (mix(_e30, _e34, ((f32(_e53) + 0.5f) / m)) * MC_DEG);
+                    let a_3 = (mix(_e30, _e34, ((f32(_e53) + 0.5f) / m)) * MC_DEG);
                     let _e61 = seg;
-                    let _e64 = mc_lobe_reference(fr_1, _e11, wi_2, wr_2, cos(a_4), sin(a_4), th_1);
+                    let _e64 = mc_lobe_reference(fr_1, _e11, wi_2, wr_2, cos(a_3), sin(a_3), th_1);
                     seg = (_e61 + _e64);
                 }
                 continuing {
@@ -438,15 +439,15 @@ fn microcylinder_mean_fresnel(eta_1: f32) -> f32 {
 }
 
 fn microcylinder_fast_const(th_2: McThread, heights: array<vec4<f32>, 9>) -> McFastConst {
-    var k_2: McFastConst = McFastConst(vec4(0f), vec4(0f), vec2(0f));
+    var k_2: McFastConst = McFastConst();
 
-    let _e10 = k_2;
-    return _e10;
+    let _e4 = k_2;
+    return _e4;
 }
 
 @vertex 
 fn vs_microcylinder(in: WeftVertexInput) -> MicrocylinderVaryings {
-    var k2_: McFastConst = McFastConst(vec4(0f), vec4(0f), vec2(0f));
+    var k2_: McFastConst = McFastConst();
 
     let _e1 = weft_forward_vertex(in);
     let _e4 = material.thread1_color;
@@ -463,12 +464,12 @@ fn vs_microcylinder(in: WeftVertexInput) -> MicrocylinderVaryings {
     let _e39 = microcylinder_thread(_e23.xyz, _e27, _e30, _e33, _e36, vec3(1f));
     let _e42 = material.thread1_curve;
     let _e43 = microcylinder_fast_const(_e20, _e42);
-    let _e61 = k2_.shape;
-    let _e63 = k2_.curve;
-    let _e65 = k2_.steps;
-    let _e67 = microcylinder_mean_fresnel(_e20.eta);
-    let _e69 = microcylinder_mean_fresnel(_e39.eta);
-    return MicrocylinderVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, _e43.shape, _e43.curve, _e43.steps, _e61, _e63, _e65, vec2<f32>(_e67, _e69));
+    let _e55 = k2_.shape;
+    let _e57 = k2_.curve;
+    let _e59 = k2_.steps;
+    let _e61 = microcylinder_mean_fresnel(_e20.eta);
+    let _e63 = microcylinder_mean_fresnel(_e39.eta);
+    return MicrocylinderVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, _e43.shape, _e43.curve, _e43.steps, _e55, _e57, _e59, vec2<f32>(_e61, _e63));
 }
 
 @fragment 
@@ -503,11 +504,11 @@ fn fs_main(in_1: MicrocylinderVaryings) -> @location(0) vec4<f32> {
     let n_4 = _e65.n;
     let _e69 = weft_tangent_frame(n_4, in_1.world_tangent);
     let t_1 = _e69[0];
-    let b_4 = _e69[1];
+    let b_3 = _e69[1];
     let _e79 = weft_safe_normalize((v_raw + (n_4 * max((0.001f - dot(n_4, v_raw)), 0f))), n_4);
     let _e80 = weft_main_light_direction();
-    let warp = McFrame(t_1, b_4, n_4);
-    let weft = McFrame(b_4, t_1, n_4);
+    let warp = McFrame(t_1, b_3, n_4);
+    let weft = McFrame(b_3, t_1, n_4);
     {
         {
             let _e91 = material.thread1_offsets_a;

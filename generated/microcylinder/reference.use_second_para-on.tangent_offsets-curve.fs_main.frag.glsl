@@ -171,9 +171,10 @@ float weft_f_dielectric(float cos_i, float eta) {
     float g = sqrt(max(g2_, 0.0));
     float gmc = (g - c);
     float gpc = max((g + c), 1e-7);
-    float a_1 = (gmc / gpc);
-    float b_1 = (((c * gpc) - 1.0) / max(((c * gmc) + 1.0), 1e-7));
-    float f = clamp((((0.5 * a_1) * a_1) * (1.0 + (b_1 * b_1))), 0.0, 1.0);
+    float b_den = max(((c * gmc) + 1.0), 1e-7);
+    float b_num = ((c * gpc) - 1.0);
+    float inv = (1.0 / (gpc * b_den));
+    float f = clamp(((((0.5 * gmc) * gmc) * ((b_den * b_den) + (b_num * b_num))) * (inv * inv)), 0.0, 1.0);
     return ((g2_ < 0.0) ? 1.0 : f);
 }
 
@@ -237,8 +238,8 @@ mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
     vec3 _e13 = weft_any_perpendicular(n_2);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_2 = (cross(n_2, t) * s_1);
-    return mat3x3(t, b_2, n_2);
+    vec3 b_1 = (cross(n_2, t) * s_1);
+    return mat3x3(t, b_1, n_2);
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
@@ -389,8 +390,8 @@ float microcylinder_mean_fresnel(float eta_1) {
 
 McFastConst microcylinder_fast_const(McThread th_2, vec4 heights_1[9]) {
     McFastConst k_1 = McFastConst(vec4(0.0), vec4(0.0), vec2(0.0));
-    McFastConst _e10 = k_1;
-    return _e10;
+    McFastConst _e4 = k_1;
+    return _e4;
 }
 
 void main() {
@@ -424,11 +425,11 @@ void main() {
     vec3 n_3 = _e65.n;
     mat3x3 _e69 = weft_tangent_frame(n_3, in_1.world_tangent);
     vec3 t_1 = _e69[0];
-    vec3 b_3 = _e69[1];
+    vec3 b_2 = _e69[1];
     vec3 _e79 = weft_safe_normalize((v_raw + (n_3 * max((0.001 - dot(n_3, v_raw)), 0.0))), n_3);
     vec3 _e80 = weft_main_light_direction();
-    McFrame warp = McFrame(t_1, b_3, n_3);
-    McFrame weft = McFrame(b_3, t_1, n_3);
+    McFrame warp = McFrame(t_1, b_2, n_3);
+    McFrame weft = McFrame(b_2, t_1, n_3);
     {
         {
             vec4 _e91[9] = _group_1_binding_0_fs.thread1_curve;

@@ -227,9 +227,10 @@ float weft_f_dielectric(float cos_i, float eta)
     float g = sqrt(max(g2_, 0.0));
     float gmc = (g - c);
     float gpc = max((g + c), 1e-7);
-    float a_1 = (gmc / gpc);
-    float b_1 = (((c * gpc) - 1.0) / max(((c * gmc) + 1.0), 1e-7));
-    float f = saturate((((0.5 * a_1) * a_1) * (1.0 + (b_1 * b_1))));
+    float b_den = max(((c * gmc) + 1.0), 1e-7);
+    float b_num = ((c * gpc) - 1.0);
+    float inv = (1.0 / (gpc * b_den));
+    float f = saturate(((((0.5 * gmc) * gmc) * ((b_den * b_den) + (b_num * b_num))) * (inv * inv)));
     return ((g2_ < 0.0) ? 1.0 : f);
 }
 
@@ -333,8 +334,8 @@ float3x3 weft_tangent_frame(float3 n_2, float4 tangent)
     const float3 _e13 = weft_any_perpendicular(n_2);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_2 = (cross(n_2, t) * s_1);
-    return float3x3(t, b_2, n_2);
+    float3 b_1 = (cross(n_2, t) * s_1);
+    return float3x3(t, b_1, n_2);
 }
 
 float2 weft_transform_uv(float2 uv, float4 st)
@@ -528,20 +529,16 @@ float microcylinder_mean_fresnel(float eta_1)
     return (_e1 + ((1.0 - _e1) / 21.0));
 }
 
-McFastConst ConstructMcFastConst(float4 arg0, float4 arg1, float2 arg2) {
-    McFastConst ret = (McFastConst)0;
-    ret.shape = arg0;
-    ret.curve = arg1;
-    ret.steps = arg2;
-    return ret;
+McFastConst ZeroValueMcFastConst() {
+    return (McFastConst)0;
 }
 
 McFastConst microcylinder_fast_const(McThread th_2, float4 heights_1[9])
 {
-    McFastConst k_1 = ConstructMcFastConst((0.0).xxxx, (0.0).xxxx, (0.0).xx);
+    McFastConst k_1 = ZeroValueMcFastConst();
 
-    McFastConst _e10 = k_1;
-    const McFastConst mcfastconst = _e10;
+    McFastConst _e4 = k_1;
+    const McFastConst mcfastconst = _e4;
     return mcfastconst;
 }
 
@@ -564,7 +561,7 @@ MicrocylinderVaryings ConstructMicrocylinderVaryings(float4 arg0, float3 arg1, f
 
 VertexOutput_vs_microcylinder vs_microcylinder(WeftVertexInput in_)
 {
-    McFastConst k2_ = ConstructMcFastConst((0.0).xxxx, (0.0).xxxx, (0.0).xx);
+    McFastConst k2_ = ZeroValueMcFastConst();
 
     const WeftVaryings _e1 = weft_forward_vertex(in_);
     float4 _e4 = material.thread1_color;
@@ -582,16 +579,16 @@ VertexOutput_vs_microcylinder vs_microcylinder(WeftVertexInput in_)
     float4 _e42[9] = material.thread1_curve;
     const McFastConst _e43 = microcylinder_fast_const(_e20, _e42);
     {
-        float4 _e54[9] = material.thread2_curve;
-        const McFastConst _e55 = microcylinder_fast_const(_e39, _e54);
-        k2_ = _e55;
+        float4 _e48[9] = material.thread2_curve;
+        const McFastConst _e49 = microcylinder_fast_const(_e39, _e48);
+        k2_ = _e49;
     }
-    float4 _e65 = k2_.shape;
-    float4 _e67 = k2_.curve;
-    float2 _e69 = k2_.steps;
-    const float _e71 = microcylinder_mean_fresnel(_e20.eta);
-    const float _e73 = microcylinder_mean_fresnel(_e39.eta);
-    const MicrocylinderVaryings microcylindervaryings = ConstructMicrocylinderVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, _e43.shape, _e43.curve, _e43.steps, _e65, _e67, _e69, float2(_e71, _e73));
+    float4 _e59 = k2_.shape;
+    float4 _e61 = k2_.curve;
+    float2 _e63 = k2_.steps;
+    const float _e65 = microcylinder_mean_fresnel(_e20.eta);
+    const float _e67 = microcylinder_mean_fresnel(_e39.eta);
+    const MicrocylinderVaryings microcylindervaryings = ConstructMicrocylinderVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, _e43.shape, _e43.curve, _e43.steps, _e59, _e61, _e63, float2(_e65, _e67));
     const VertexOutput_vs_microcylinder microcylindervaryings_1 = { microcylindervaryings.world_position, microcylindervaryings.world_normal, microcylindervaryings.world_tangent, microcylindervaryings.uv0_, microcylindervaryings.thread1_shape, microcylindervaryings.thread1_curve, microcylindervaryings.thread1_steps, microcylindervaryings.thread2_shape, microcylindervaryings.thread2_curve, microcylindervaryings.thread2_steps, microcylindervaryings.mean_fresnel, microcylindervaryings.clip_position };
     return microcylindervaryings_1;
 }
@@ -637,11 +634,11 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 n_3 = _e65.n;
     const float3x3 _e69 = weft_tangent_frame(n_3, in_1.world_tangent);
     float3 t_1 = _e69[0];
-    float3 b_3 = _e69[1];
+    float3 b_2 = _e69[1];
     const float3 _e79 = weft_safe_normalize((v_raw + (n_3 * max((0.001 - dot(n_3, v_raw)), 0.0))), n_3);
     const float3 _e80 = weft_main_light_direction();
-    McFrame warp = ConstructMcFrame(t_1, b_3, n_3);
-    McFrame weft = ConstructMcFrame(b_3, t_1, n_3);
+    McFrame warp = ConstructMcFrame(t_1, b_2, n_3);
+    McFrame weft = ConstructMcFrame(b_2, t_1, n_3);
     {
         {
             float4 _e91[9] = material.thread1_curve;

@@ -179,9 +179,10 @@ float weft_f_dielectric(
     float g = metal::sqrt(metal::max(g2_, 0.0));
     float gmc = g - c;
     float gpc = metal::max(g + c, 0.0000001);
-    float a_1 = gmc / gpc;
-    float b_1 = ((c * gpc) - 1.0) / metal::max((c * gmc) + 1.0, 0.0000001);
-    float f = metal::saturate(((0.5 * a_1) * a_1) * (1.0 + (b_1 * b_1)));
+    float b_den = metal::max((c * gmc) + 1.0, 0.0000001);
+    float b_num = (c * gpc) - 1.0;
+    float inv = 1.0 / (gpc * b_den);
+    float f = metal::saturate((((0.5 * gmc) * gmc) * ((b_den * b_den) + (b_num * b_num))) * (inv * inv));
     return (g2_ < 0.0) ? 1.0 : f;
 }
 
@@ -290,8 +291,8 @@ metal::float3x3 weft_tangent_frame(
     metal::float3 _e13 = weft_any_perpendicular(n_2);
     metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_2 = metal::cross(n_2, t) * s_1;
-    return metal::float3x3(t, b_2, n_2);
+    metal::float3 b_1 = metal::cross(n_2, t) * s_1;
+    return metal::float3x3(t, b_1, n_2);
 }
 
 metal::float2 weft_transform_uv(
@@ -502,9 +503,9 @@ McFastConst microcylinder_fast_const(
     McThread th_2,
     type_5 heights_1
 ) {
-    McFastConst k_1 = McFastConst {metal::float4(0.0), metal::float4(0.0), metal::float2(0.0)};
-    McFastConst _e10 = k_1;
-    return _e10;
+    McFastConst k_1 = McFastConst {};
+    McFastConst _e4 = k_1;
+    return _e4;
 }
 
 struct vs_microcylinderInput {
@@ -534,7 +535,7 @@ vertex vs_microcylinderOutput vs_microcylinder(
 , constant WeftMaterial& material [[buffer(1)]]
 ) {
     const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_1, varyings.uv0_ };
-    McFastConst k2_ = McFastConst {metal::float4(0.0), metal::float4(0.0), metal::float2(0.0)};
+    McFastConst k2_ = McFastConst {};
     WeftVaryings _e1 = weft_forward_vertex(in, weft_frame, weft_object);
     metal::float4 _e4 = material.thread1_color;
     float _e8 = material.thread1_ior;
@@ -551,16 +552,16 @@ vertex vs_microcylinderOutput vs_microcylinder(
     type_5 _e42 = material.thread1_curve;
     McFastConst _e43 = microcylinder_fast_const(_e20, _e42);
     {
-        type_5 _e54 = material.thread2_curve;
-        McFastConst _e55 = microcylinder_fast_const(_e39, _e54);
-        k2_ = _e55;
+        type_5 _e48 = material.thread2_curve;
+        McFastConst _e49 = microcylinder_fast_const(_e39, _e48);
+        k2_ = _e49;
     }
-    metal::float4 _e65 = k2_.shape;
-    metal::float4 _e67 = k2_.curve;
-    metal::float2 _e69 = k2_.steps;
-    float _e71 = microcylinder_mean_fresnel(_e20.eta);
-    float _e73 = microcylinder_mean_fresnel(_e39.eta);
-    const auto _tmp = MicrocylinderVaryings {_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, {}, _e43.shape, _e43.curve, _e43.steps, {}, _e65, _e67, _e69, metal::float2(_e71, _e73)};
+    metal::float4 _e59 = k2_.shape;
+    metal::float4 _e61 = k2_.curve;
+    metal::float2 _e63 = k2_.steps;
+    float _e65 = microcylinder_mean_fresnel(_e20.eta);
+    float _e67 = microcylinder_mean_fresnel(_e39.eta);
+    const auto _tmp = MicrocylinderVaryings {_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, {}, _e43.shape, _e43.curve, _e43.steps, {}, _e59, _e61, _e63, metal::float2(_e65, _e67)};
     return vs_microcylinderOutput { _tmp.clip_position, _tmp.world_position, _tmp.world_normal, _tmp.world_tangent, _tmp.uv0_, _tmp.thread1_shape, _tmp.thread1_curve, _tmp.thread1_steps, _tmp.thread2_shape, _tmp.thread2_curve, _tmp.thread2_steps, _tmp.mean_fresnel };
 }
 
@@ -619,11 +620,11 @@ fragment fs_mainOutput fs_main(
     metal::float3 n_3 = _e65.n;
     metal::float3x3 _e69 = weft_tangent_frame(n_3, in_1.world_tangent);
     metal::float3 t_1 = _e69[0];
-    metal::float3 b_3 = _e69[1];
+    metal::float3 b_2 = _e69[1];
     metal::float3 _e79 = weft_safe_normalize(v_raw + (n_3 * metal::max(0.001 - metal::dot(n_3, v_raw), 0.0)), n_3);
     metal::float3 _e80 = weft_main_light_direction(weft_frame);
-    McFrame warp = McFrame {t_1, b_3, n_3};
-    McFrame weft = McFrame {b_3, t_1, n_3};
+    McFrame warp = McFrame {t_1, b_2, n_3};
+    McFrame weft = McFrame {b_2, t_1, n_3};
     {
         {
             type_5 _e91 = material.thread1_curve;

@@ -173,9 +173,10 @@ fn weft_f_dielectric(cos_i: f32, eta: f32) -> f32 {
     let g = sqrt(max(g2_, 0f));
     let gmc = (g - c);
     let gpc = max((g + c), 0.0000001f);
-    let a_1 = (gmc / gpc);
-    let b_1 = (((c * gpc) - 1f) / max(((c * gmc) + 1f), 0.0000001f));
-    let f = saturate((((0.5f * a_1) * a_1) * (1f + (b_1 * b_1))));
+    let b_den = max(((c * gmc) + 1f), 0.0000001f);
+    let b_num = ((c * gpc) - 1f);
+    let inv = (1f / (gpc * b_den));
+    let f = saturate(((((0.5f * gmc) * gmc) * ((b_den * b_den) + (b_num * b_num))) * (inv * inv)));
     return select(f, 1f, (g2_ < 0f));
 }
 
@@ -262,8 +263,8 @@ fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let _e13 = weft_any_perpendicular(n_2);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_2 = (cross(n_2, t) * s_1);
-    return mat3x3<f32>(t, b_2, n_2);
+    let b_1 = (cross(n_2, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_2);
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -414,15 +415,15 @@ fn microcylinder_mean_fresnel(eta_1: f32) -> f32 {
 }
 
 fn microcylinder_fast_const(th_2: McThread, heights_1: array<vec4<f32>, 9>) -> McFastConst {
-    var k_1: McFastConst = McFastConst(vec4(0f), vec4(0f), vec2(0f));
+    var k_1: McFastConst = McFastConst();
 
-    let _e10 = k_1;
-    return _e10;
+    let _e4 = k_1;
+    return _e4;
 }
 
 @vertex 
 fn vs_microcylinder(in: WeftVertexInput) -> MicrocylinderVaryings {
-    var k2_: McFastConst = McFastConst(vec4(0f), vec4(0f), vec2(0f));
+    var k2_: McFastConst = McFastConst();
 
     let _e1 = weft_forward_vertex(in);
     let _e4 = material.thread1_color;
@@ -440,16 +441,16 @@ fn vs_microcylinder(in: WeftVertexInput) -> MicrocylinderVaryings {
     let _e42 = material.thread1_curve;
     let _e43 = microcylinder_fast_const(_e20, _e42);
     {
-        let _e54 = material.thread2_curve;
-        let _e55 = microcylinder_fast_const(_e39, _e54);
-        k2_ = _e55;
+        let _e48 = material.thread2_curve;
+        let _e49 = microcylinder_fast_const(_e39, _e48);
+        k2_ = _e49;
     }
-    let _e65 = k2_.shape;
-    let _e67 = k2_.curve;
-    let _e69 = k2_.steps;
-    let _e71 = microcylinder_mean_fresnel(_e20.eta);
-    let _e73 = microcylinder_mean_fresnel(_e39.eta);
-    return MicrocylinderVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, _e43.shape, _e43.curve, _e43.steps, _e65, _e67, _e69, vec2<f32>(_e71, _e73));
+    let _e59 = k2_.shape;
+    let _e61 = k2_.curve;
+    let _e63 = k2_.steps;
+    let _e65 = microcylinder_mean_fresnel(_e20.eta);
+    let _e67 = microcylinder_mean_fresnel(_e39.eta);
+    return MicrocylinderVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, _e43.shape, _e43.curve, _e43.steps, _e59, _e61, _e63, vec2<f32>(_e65, _e67));
 }
 
 @fragment 
@@ -484,11 +485,11 @@ fn fs_main(in_1: MicrocylinderVaryings) -> @location(0) vec4<f32> {
     let n_3 = _e65.n;
     let _e69 = weft_tangent_frame(n_3, in_1.world_tangent);
     let t_1 = _e69[0];
-    let b_3 = _e69[1];
+    let b_2 = _e69[1];
     let _e79 = weft_safe_normalize((v_raw + (n_3 * max((0.001f - dot(n_3, v_raw)), 0f))), n_3);
     let _e80 = weft_main_light_direction();
-    let warp = McFrame(t_1, b_3, n_3);
-    let weft = McFrame(b_3, t_1, n_3);
+    let warp = McFrame(t_1, b_2, n_3);
+    let weft = McFrame(b_2, t_1, n_3);
     {
         {
             let _e91 = material.thread1_curve;

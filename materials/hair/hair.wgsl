@@ -37,10 +37,11 @@ const HAIR_REFERENCE_CELLS: u32 = 64u;
 // layer at the terminator where light still passes (README).
 const HAIR_TERMINATOR: f32 = 0.25;
 
-// lib/forward.wgsl's varyings (locations 0-3) and, flat, what the physical
-// tiers' fibre model takes from the uniforms alone (weft_hair_params but σ_a;
-// the same value at every vertex): RDNA has no scalar float ALU, so computed
-// in the fragment stage it is per-pixel work (README, "Per-vertex constants").
+// lib/forward.wgsl's varyings (locations 0-3) and, flat, what the fragment
+// stage takes from the uniforms alone (the physical tiers' weft_hair_params
+// but σ_a, and every tier's jitter rotation and noise period; the same value
+// at every vertex): RDNA has no scalar float ALU, so computed in the fragment
+// stage it is per-pixel work (README, "Per-vertex constants").
 struct HairVaryings {
     @builtin(position) clip_position: vec4<f32>,
     @location(0) world_position: vec3<f32>,
@@ -57,6 +58,8 @@ struct HairVaryings {
     @location(7) @interpolate(flat) mp_norm: vec4<f32>,
     @location(8) @interpolate(flat) inv_v: vec4<f32>,
     @location(9) @interpolate(flat) trt: vec4<f32>,
+    // cos and sin of the jitter's uv rotation, 1/η, the noise's period.
+    @location(10) @interpolate(flat) jitter: vec4<f32>,
 }
 
 @vertex
@@ -65,16 +68,17 @@ fn vs_hair(in: WeftVertexInput) -> HairVaryings {
     var h = weft_hair_params(vec3<f32>(0.0), material.ior, material.roughness, material.azimuthal_roughness, material.scale_angle);
     var scale = 0.0;
     if WEFT_TIER == TIER_SEED {
-        h = WeftHair(vec3<f32>(0.0), 0.0, vec4<f32>(0.0), 0.0, vec3<f32>(0.0), vec3<f32>(0.0),
-                     vec3<f32>(0.0), vec3<f32>(0.0), vec2<f32>(0.0), 0.0, vec4<f32>(0.0), 0.0);
+        h = WeftHair();
     } else {
         scale = weft_hair_sigma_a_scale(material.azimuthal_roughness);
     }
+    let a = radians(material.anisotropic_direction);
     return HairVaryings(
         base.clip_position, base.world_position, base.world_normal, base.world_tangent, base.uv0,
         vec4<f32>(h.eta, h.s, h.v.x, scale),
         vec4<f32>(h.sin2k, h.r_floor), vec4<f32>(h.cos2k, h.blur.x),
         vec4<f32>(h.mp_norm, h.blur.y), vec4<f32>(h.inv_v, h.trt.x), vec4<f32>(h.trt.yzw, h.trt4),
+        vec4<f32>(cos(a), sin(a), h.inv_eta, hair_noise_period(material.strand_density)),
     );
 }
 
@@ -84,7 +88,7 @@ fn hair_from_varyings(in: HairVaryings, sigma_a: vec3<f32>) -> WeftHair {
     let v = in.fibre.z;
     return WeftHair(max(sigma_a, vec3<f32>(0.0)), in.fibre.x, vec4<f32>(v, 0.25 * v, 4.0 * v, 4.0 * v), in.fibre.y,
                     in.sin2k.xyz, in.cos2k.xyz, in.inv_v.xyz, in.mp_norm.xyz, vec2<f32>(in.cos2k.w, in.mp_norm.w),
-                    in.sin2k.w, vec4<f32>(in.inv_v.w, in.trt.xyz), in.trt.w);
+                    in.sin2k.w, vec4<f32>(in.inv_v.w, in.trt.xyz), in.trt.w, in.jitter.z);
 }
 
 @fragment
@@ -101,7 +105,7 @@ fn fs_main(in: HairVaryings) -> @location(0) vec4<f32> {
     let n = surface.n;
     let frame = weft_tangent_frame(n, in.world_tangent);
     let strand = hair_strand(frame, in.uv0);
-    let shift = hair_jitter(in.uv0);
+    let shift = hair_jitter(in.uv0, in.jitter);
     let l = weft_main_light_direction();
     let light = weft_main_light_radiance();
     let ambient = weft_sh_irradiance(n);
@@ -174,27 +178,31 @@ fn hair_strand(frame: mat3x3<f32>, uv0: vec2<f32>) -> vec3<f32> {
 // channel, with its own tiling; in the masked region of the UV-rotation mask,
 // step(0.8, mask), the uv is first rotated by the direction angle, as the
 // seed does for cards unwrapped across the strands) times its strength, plus
-// a procedural per-strand noise across the strands.
-fn hair_jitter(uv0: vec2<f32>) -> f32 {
+// a procedural per-strand noise across the strands. `per_vertex`: the flat
+// varying's cos and sin of the direction angle (xy) and the noise's period (w).
+fn hair_jitter(uv0: vec2<f32>, per_vertex: vec4<f32>) -> f32 {
     let mask = step(0.8, textureSample(uv_rotate_mask, material_sampler, uv0).r);
-    let a = radians(material.anisotropic_direction);
-    let c = cos(a);
-    let s = sin(a);
+    let c = per_vertex.x;
+    let s = per_vertex.y;
     // HLSL mul(float2x2(c, s, -s, c), uv): rows (c, s) and (-s, c).
     let rotated = vec2<f32>(c * uv0.x + s * uv0.y, -s * uv0.x + c * uv0.y);
     let uv_j = weft_transform_uv(select(uv0, rotated, mask > 0.5), material.jitter_map_st);
     let j = textureSample(jitter_map, material_sampler, uv_j).r;
     // Across the strands: u when they run along v, and v otherwise.
     let across = select(uv_j.x, uv_j.y, material.strand_along_tangent != 0u);
-    return material.jitter_strength * j + material.strand_noise * hair_value_noise(across * material.strand_density, material.strand_density);
+    return material.jitter_strength * j + material.strand_noise * hair_value_noise(across * material.strand_density, per_vertex.w);
+}
+
+// The noise's period in cells: the strand density, rounded, at least 1.
+fn hair_noise_period(density: f32) -> f32 {
+    return max(round(density), 1.0);
 }
 
 // 1-D value noise in [-0.5, 0.5]: a hash per integer cell (PCG, Jarzynski &
 // Olano 2020), smoothstep-interpolated; deterministic on every GPU. The cells
-// repeat every `period`, so the noise wraps across a uv seam (u = 0 and 1 on
-// the sphere) when the density and the tiling are integers.
-fn hair_value_noise(x: f32, period: f32) -> f32 {
-    let p = max(round(period), 1.0);
+// repeat every `p` (hair_noise_period), so the noise wraps across a uv seam
+// (u = 0 and 1 on the sphere) when the density and the tiling are integers.
+fn hair_value_noise(x: f32, p: f32) -> f32 {
     let cell = floor(x);
     let f = x - cell;
     let c0 = cell - p * floor(cell / p);

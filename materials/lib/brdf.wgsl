@@ -139,16 +139,21 @@ fn weft_f_schlick_roughness(f0: vec3<f32>, n_dot_v: f32, roughness: f32) -> vec3
 // (Walter et al. 2007, eq. 22). cos_i = |i.m|, eta = n_transmitted / n_incident.
 // g^2 < 0 is total internal reflection (F = 1). At eta = 1, cos_i = 0 the
 // formula is 0/0: c is floored at 1e-4 and g + c at 1e-7.
+// F = a² (1 + b²) / 2 with a = (g - c) / (g + c), b = (c (g + c) - 1) /
+// (c (g - c) + 1), over one common denominator: one division instead of two
+// (each a reciprocal on the GPU; both floors keep it >= 1e-14, its square
+// within f32).
 fn weft_f_dielectric(cos_i: f32, eta: f32) -> f32 {
     let c = clamp(abs(cos_i), WEFT_MIN_N_DOT, 1.0);
     let g2 = eta * eta - 1.0 + c * c;
     let g = sqrt(max(g2, 0.0));
     let gmc = g - c;
     let gpc = max(g + c, 1e-7);
-    let a = gmc / gpc;
     // c (g - c) + 1 >= 0 for c <= 1, eta >= 0; floored for eta -> 0.
-    let b = (c * gpc - 1.0) / max(c * gmc + 1.0, 1e-7);
-    let f = saturate(0.5 * a * a * (1.0 + b * b));
+    let b_den = max(c * gmc + 1.0, 1e-7);
+    let b_num = c * gpc - 1.0;
+    let inv = 1.0 / (gpc * b_den);
+    let f = saturate(0.5 * gmc * gmc * (b_den * b_den + b_num * b_num) * (inv * inv));
     return select(f, 1.0, g2 < 0.0);
 }
 

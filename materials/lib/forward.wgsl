@@ -29,7 +29,8 @@ fn vs_main(in: WeftVertexInput) -> WeftVaryings {
 }
 
 // The body of vs_main, for a material whose vertex stage adds varyings of its
-// own (microcylinder's vs_microcylinder: values of its uniforms alone, flat).
+// own (microcylinder's vs_microcylinder, hair's vs_hair: values of their
+// uniforms alone, flat).
 fn weft_forward_vertex(in: WeftVertexInput) -> WeftVaryings {
     let model = weft_object.model;
     let model3 = mat3x3<f32>(model[0].xyz, model[1].xyz, model[2].xyz);

@@ -31,13 +31,14 @@ struct WeftHair {
     // The fast tier's (weft_hair_fast): 1/v_p and M_p's normalisation
     // 1/(v_p (1 - e^(-2/v_p))) of R, TT, TRT; sin, cos of the TT blur's
     // half-step δ/2; R's floor (σ/4)²; log s_TRT²'s coefficients in a
-    // (powers 0-3, then 4 in trt4).
+    // (powers 0-3, then 4 in trt4); 1/η.
     inv_v: vec3<f32>,
     mp_norm: vec3<f32>,
     blur: vec2<f32>,
     r_floor: f32,
     trt: vec4<f32>,
     trt4: f32,
+    inv_eta: f32,
 }
 
 // Smallest longitudinal roughness: v_TT = v / 4 stays above 2e-4, where the
@@ -130,6 +131,7 @@ fn weft_hair_params(sigma_a: vec3<f32>, eta: f32, beta_m: f32, beta_n: f32, alph
     hair.trt = vec4<f32>(-9.2609 + sh * (65.993 - 107.38 * sh), 72.357 + sh * (-624.68 + 1069.8 * sh),
                          -153.75 + sh * (1704.7 - 3127.5 * sh), -67.745 + sh * (-1105.8 + 2706.6 * sh));
     hair.trt4 = 239.74 - 430.94 * sh;
+    hair.inv_eta = 1.0 / hair.eta;
     return hair;
 }
 
@@ -471,8 +473,9 @@ fn weft_hair_fast(hair: WeftHair, t: vec3<f32>, o: vec3<f32>, i: vec3<f32>) -> W
     let bessel = (1.0 + u * (1.0 - u) * (0.181903 + u * (-0.401835 + u * 3.1851))) * inverseSqrt(1.0 + 2.0 * WEFT_PI * x);
     let mp = exp(min((cos_i * co - sin_i * so - 1.0) * inv_v, vec3<f32>(0.0))) * bessel * norm;
 
-    let sin_t = sin_o / hair.eta;
-    let chord = 2.0 / max(weft_hair_safe_sqrt(1.0 - sin_t * sin_t), 1e-4);
+    // chord = 2 / cos θ_t (as weft_hair_attenuation), cos θ_t floored at 1e-4.
+    let sin_t = sin_o * hair.inv_eta;
+    let chord = 2.0 * inverseSqrt(max(1.0 - sin_t * sin_t, 1e-8));
     // a = 1/η' = cos θ_o / √(η² - sin² θ_o) (Bravais).
     let a = cos_o * inverseSqrt(max(hair.eta * hair.eta - sin_o * sin_o, 1e-8));
     // The logistic's standard deviation is πs/√3; the blur's half-step in

@@ -48,7 +48,8 @@
 //     surface and volume terms), integrated with a few nodes per range of
 //     offsets instead of one lobe per degree (microcylinder_nodes.wgsl,
 //     "fast tier"): each range clipped to the offsets where M P > 0 (an
-//     interval, in closed form); offset lists by the 3-node rule (microcylinder_nodes.wgsl, as low),
+//     interval, in closed form); offset lists by the 3-node rule
+//     (microcylinder_nodes.wgsl, as low),
 //     curves by one range in t and two nodes (Gauss-Legendre, or the
 //     2-point Gauss-Jacobi rule for the weight (t - t0)^2 (t1 - t)^2 where
 //     both ends of the range are support bounds, where M P vanishes

@@ -96,7 +96,7 @@ struct MicrocylinderVaryings {
 // The thread set's McFastConst where fast reads it (a list reads only its
 // shape), else zero.
 fn microcylinder_fast_const(th: McThread, heights: array<vec4<f32>, 9>) -> McFastConst {
-    var k = McFastConst(vec4<f32>(0.0), vec4<f32>(0.0), vec2<f32>(0.0));
+    var k = McFastConst();
     if WEFT_TIER == TIER_FAST {
         if TANGENT_OFFSETS == TANGENT_OFFSETS_LIST {
             k.shape = mc_fast_shape(th);
@@ -116,7 +116,7 @@ fn vs_microcylinder(in: WeftVertexInput) -> MicrocylinderVaryings {
     let th2 = microcylinder_thread(material.thread2_color.rgb, material.thread2_ior, material.thread2_isotropy,
                                    material.thread2_gamma_s, material.thread2_gamma_v, vec3<f32>(1.0));
     let k1 = microcylinder_fast_const(th1, material.thread1_curve);
-    var k2 = McFastConst(vec4<f32>(0.0), vec4<f32>(0.0), vec2<f32>(0.0));
+    var k2 = McFastConst();
     if USE_SECOND_PARA {
         k2 = microcylinder_fast_const(th2, material.thread2_curve);
     }

@@ -216,10 +216,10 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
 // into one v_pk_* instruction each; README, "On AMD's compiler"), Schlick
 // F, the layer weights, the split-sum albedos and the diffuse weights.
 // Light radiance, SH, the prefiltered environment and the table fetch stay
-// f32; the noise factor is applied in f32. The lobes' roughness is floored at 0.089 (f16's GGX peak
-// limit) and each width at 0.089^2; the table and the environment keep the
-// material's roughness. The table is read filtered, as fast (a nearest-texel
-// read costs more on a GPU).
+// f32; the noise factor is applied in f32. The lobes' roughness is floored
+// at 0.089 (f16's GGX peak limit) and each width at 0.089^2; the table and
+// the environment keep the material's roughness. The table is read
+// filtered, as fast (a nearest-texel read costs more on a GPU).
 fn satin_lobes_low(vf: vec3<weft_half>, lf: vec3<weft_half>, hf: vec3<weft_half>, a1: vec2<f32>, a2: vec2<f32>) -> vec2<weft_half> {
     let at = vec2<f32>(a1.x, a2.x);
     let ab = vec2<f32>(a1.y, a2.y);

@@ -20,8 +20,9 @@
 //               (at roughness 0.35 and n.v = 1 it gives 0.89 F0 against
 //               0.98 F0), hence a look rather than an approximation.
 //   low       = an approximation of the reference in half precision: the
-//               fast tier's visibility and the reference's D in weft_half (f16 with shader-f16; the
-//               f32 fallback otherwise), roughness floored at 0.089
+//               fast tier's visibility and the reference's D in weft_half
+//               (f16 with shader-f16; the f32 fallback otherwise),
+//               roughness floored at 0.089
 //               (standard_low below, lib/half.wgsl).
 // All: Lambert diffuse with 1/pi, L2 SH ambient, prefiltered environment cube,
 // emission added after lighting (glTF emissive), back faces shaded with the
