@@ -8,16 +8,18 @@
 //! recompiles only the material it touched, and the LUTs are baked once.
 
 use crate::ServeOptions;
+use crate::tier_costs::TierCosts;
 use std::collections::{BTreeMap, HashMap};
 use std::path::Path;
 use std::sync::{Arc, Mutex};
 use weft_compiler::{BuildOptions, BuildOutput};
-use weft_meta::{MaterialMetadata, Measurements};
+use weft_meta::MaterialMetadata;
 
 /// One material of a good build.
 pub struct MaterialEntry {
     pub metadata: MaterialMetadata,
-    /// The metadata as served (measurements attached when a report exists).
+    /// The metadata as served (measurements and the GPU model's tier costs
+    /// attached when the reports have them: `tier_costs`).
     pub json: Vec<u8>,
 }
 
@@ -179,17 +181,12 @@ fn compile(dir: &Path, reuse: Option<&Path>) -> Result<BuildOutput, String> {
 }
 
 fn snapshot(out: BuildOutput, reports: &Path) -> Snapshot {
+    let costs = TierCosts::load(reports);
     let mut materials: Vec<MaterialEntry> = out
         .materials
         .into_iter()
         .map(|mut metadata| {
-            let report = reports.join(format!("{}.measurements.json", metadata.name));
-            if let Ok(bytes) = std::fs::read(&report)
-                && let Ok(m) = serde_json::from_slice::<Measurements>(&bytes)
-            {
-                metadata.measurements = Some(m);
-            }
-            let json = serde_json::to_vec(&metadata).unwrap_or_default();
+            let json = costs.served_json(&mut metadata);
             MaterialEntry { metadata, json }
         })
         .collect();

@@ -28,6 +28,7 @@ mod http;
 mod query;
 mod routes;
 mod signals;
+mod tier_costs;
 mod watch;
 
 pub use build::{BuildStatus, Snapshot};
@@ -41,8 +42,9 @@ use std::path::{Path, PathBuf};
 pub struct ServeOptions {
     /// The materials folder (one folder per material, `lib/` for shared WGSL).
     pub materials: PathBuf,
-    /// Where `<name>.measurements.json` reports are read from (tier costs
-    /// and errors in the tier selector). None: `<materials>/../generated/reports`.
+    /// Where `<name>.measurements.json` reports and `gpu-model.json` are
+    /// read from (tier costs and errors in the tier selector). None:
+    /// `<materials>/../generated/reports`.
     pub reports: Option<PathBuf>,
     /// Port on 127.0.0.1; 0 picks a free one.
     pub port: u16,
@@ -145,8 +147,9 @@ pub struct ServeArgs {
     /// Write the inspector as static files into this folder (replaced atomically) and exit.
     #[arg(long, value_name = "DIR")]
     pub export: Option<PathBuf>,
-    /// Folder of `<name>.measurements.json` reports for the tier selector
-    /// (default: generated/reports beside the materials folder).
+    /// Folder of `<name>.measurements.json` reports and `gpu-model.json`
+    /// for the tier selector (default: generated/reports beside the
+    /// materials folder).
     #[arg(long, value_name = "DIR")]
     pub reports: Option<PathBuf>,
 }

@@ -8,7 +8,7 @@
 //! | `index.html`, `*.js`, `style.css` | the page |
 //! | `sky.wgsl` | weft-render's background shader (the environment seen from the camera) |
 //! | `api/library.json` | build status: generation, diagnostics, materials |
-//! | `api/materials/<name>.json` | a material's metadata (measurements attached) |
+//! | `api/materials/<name>.json` | a material's metadata (measurements and the GPU model's tier costs attached: `tier_costs.rs`) |
 //! | `api/files/<path>` | a generated file (`<material>/<file>`, `luts/…`) |
 //! | `api/spirv/<material>/<file>.spv.txt` | a SPIR-V file disassembled |
 //! | `api/environment.json`, `.bin` | the prefiltered sky cube, SH, default light |

@@ -92,6 +92,21 @@ fn panel_controls_drive_the_preview() {
         page.eval("window.weftInspector.variantId()"),
         json!("reference.normal_map-off.sphere_map-multiply")
     );
+    // The tier table: measured time and, in columns of their own, the GPU
+    // model's cost per AMD family (generated/reports/gpu-model.json), where
+    // standard `fast` is the baseline, 1.00.
+    assert_eq!(
+        page.eval(
+            "[...document.querySelectorAll('#tier-panel table.tiers th')].map((h) => h.textContent).slice(1, 6)"
+        ),
+        json!(["ms measured", "× measured", "navi21 ×", "gfx1100 ×", "VGPRs / waves"])
+    );
+    assert_eq!(
+        page.eval(
+            "[...document.querySelectorAll('#tier-panel table.tiers tr')].find((r) => r.cells[0].textContent === 'fast').cells[3].textContent"
+        ),
+        json!("1.00")
+    );
 
     // Preset: values, keywords and the controls follow.
     let plain = page.capture();

@@ -15,7 +15,10 @@ const ZH = {
   'default': '默认', 'use the default': '使用默认',
   'tiling / offset': '平铺 / 偏移', 'time': '时间', 'value': '值', 'in': '入斜率', 'out': '出斜率', 'key': '关键帧',
   'remove key': '删除关键帧', 'stop': '色标', 'remove stop': '删除色标', 'Build failed: the last good build stays visible': '构建失败：仍显示上一次成功的构建',
-  'measured': '实测', 'GPU ms': 'GPU 毫秒', 'FLIP mean vs reference': '相对参考档的 FLIP 均值', 'no measurements': '无实测数据',
+  'measured': '实测', 'ms measured': '实测毫秒', '× measured': '实测倍数', 'FLIP mean vs reference': '相对参考档的 FLIP 均值', 'no measurements': '无实测数据',
+  'GPU model': 'GPU 模型', 'VGPRs / waves': 'VGPR / 波数',
+  'loop-aware executed cost ÷ standard fast, fragment stage': '计入循环的执行代价 ÷ standard fast，片元阶段',
+  'modelled on an earlier version of this material': '模型数据来自此材质的旧版本',
   'measured on an earlier version of this material': '实测数据来自此材质的旧版本', 'not compiled': '未编译',
   'static export: no live rebuilds': '静态导出：不会实时重建', 'live': '实时', 'Reset view': '重置视角',
   'sphere': '球体', 'cloth': '布料', 'swatch': '样片', 'bust': '半身像', 'variants': '个变体', 'Warnings': '警告',
@@ -278,15 +281,26 @@ function tierPanel() {
   select.value = state.tier;
   select.addEventListener('change', () => { state.tier = select.value; rebuildPanel(); queue(applyVariant); });
   wrap.append(select);
+  // Measured (a rasteriser's timings, lavapipe unless measured elsewhere) and
+  // the GPU model (AMD's compiler, per family) side by side, never mixed.
   const m = meta.measurements;
+  const families = (meta.gpu_model && meta.gpu_model.families) || [];
+  const modelTip = `${t('GPU model')}: ${t('loop-aware executed cost ÷ standard fast, fragment stage')}`;
   const table = el('table', { class: 'tiers' });
-  table.append(el('tr', {}, el('th', { text: t('Tier') }), el('th', { text: t('GPU ms') }), el('th', { text: '×' }), el('th', { text: t('FLIP mean vs reference') }), el('th', {})));
+  table.append(el('tr', {}, el('th', { text: t('Tier') }), el('th', { text: t('ms measured') }), el('th', { text: t('× measured') }),
+    ...families.map((f) => el('th', { text: `${f.family} ×`, title: `${modelTip} (${f.device}, ${f.driver})` })),
+    ...(families.length ? [el('th', { text: t('VGPRs / waves'), title: `${families[0].device}` })] : []),
+    el('th', { text: t('FLIP mean vs reference') }), el('th', {})));
   for (const tier of meta.tiers.values) {
     const row = m && m.tiers.find((x) => x.tier === tier);
+    const modelled = families.map((f) => f.tiers.find((x) => x.tier === tier));
+    const first = modelled[0];
     table.append(el('tr', { class: tier === state.tier ? 'current' : '' },
       el('td', { text: tier }),
       el('td', { text: row ? row.gpu_ms.toFixed(1) : '—' }),
       el('td', { text: row && row.ratio_to_standard_fast ? row.ratio_to_standard_fast.toFixed(2) : '—' }),
+      ...modelled.map((c) => el('td', { text: c ? c.executed_ratio.toFixed(2) : '—' })),
+      ...(families.length ? [el('td', { text: first ? `${first.vgprs} / ${first.waves}` : '—' })] : []),
       el('td', { text: row ? row.flip_mean.toFixed(3) : '—' }),
       el('td', { class: 'desc', text: text(meta.tiers.descriptions[tier]) })));
   }
@@ -294,6 +308,10 @@ function tierPanel() {
   if (m) {
     wrap.append(el('p', { class: 'note', text: `${t('measured')}: ${m.adapter}, ${m.width}×${m.height} ${m.scene}` + (m.inputs_hash !== meta.inputs_hash ? ` — ${t('measured on an earlier version of this material')}` : '') }));
   } else wrap.append(el('p', { class: 'note', text: t('no measurements') }));
+  if (families.length) {
+    const stale = meta.gpu_model.inputs_hash && meta.gpu_model.inputs_hash !== meta.inputs_hash;
+    wrap.append(el('p', { class: 'note', text: `${modelTip}: ${families.map((f) => `${f.family} (${f.device}, ${f.driver})`).join(', ')}` + (stale ? ` — ${t('modelled on an earlier version of this material')}` : '') }));
+  }
   return wrap;
 }
 

@@ -199,3 +199,60 @@ fn environment_follows_a_requested_sun_and_refuses_bad_directions() {
     assert_ne!(bin, default_bin);
     eprintln!("environment for a new sun: {first:?}; cached: {cached:?}");
 }
+
+/// The tier panel's figures: a material's served metadata carries its
+/// measurements and, apart, the GPU model's tier costs per family from the
+/// reports folder's `gpu-model.json`, with the inputs hash of the files the
+/// model costed (the page flags a material changed since); a material the
+/// model lacks gets no `gpu_model`.
+#[test]
+fn served_metadata_carries_the_gpu_models_tier_costs() {
+    let dir = fixture();
+    let reports = dir.path().join("out/reports");
+    std::fs::create_dir_all(&reports).unwrap();
+    std::fs::create_dir_all(dir.path().join("out/switches")).unwrap();
+    std::fs::write(
+        dir.path().join("out/switches/switches.meta.json"),
+        r#"{"inputs_hash": "costed-hash"}"#,
+    )
+    .unwrap();
+    let fragment = r#"{"instructions": 300, "vgprs": 40, "waves": 24, "static_cost": 400.0, "executed_cost": 400.0, "unknown_loops": 0}"#;
+    let family = |name: &str, ratio: f64| {
+        format!(
+            r#"{{"family": "{name}", "device_name": "Null hardware (RADV {name})", "driver_info": "Mesa 22.3.6",
+                "tiers": [{{"material": "switches", "tier": "fast", "variant": "fast", "fragment": {fragment}, "executed_ratio": {ratio}}}],
+                "variants": [], "scene_shaders": []}}"#
+        )
+    };
+    std::fs::write(
+        reports.join("gpu-model.json"),
+        format!(
+            r#"{{"command": "test", "families": [{}, {}]}}"#,
+            family("navi21", 1.25),
+            family("gfx1100", 1.5)
+        ),
+    )
+    .unwrap();
+    let options = weft_serve::ServeOptions {
+        reports: Some(reports),
+        ..ServeOptions::new(dir.path())
+    };
+    let server = Server::start(options).unwrap();
+    let port = server.port();
+    let meta: serde_json::Value =
+        serde_json::from_str(body(&get(port, "/api/materials/switches.json"))).unwrap();
+    let model = &meta["gpu_model"];
+    assert_eq!(model["inputs_hash"], "costed-hash");
+    let families = model["families"].as_array().unwrap();
+    assert_eq!(families.len(), 2);
+    assert_eq!(families[0]["family"], "navi21");
+    assert_eq!(families[0]["tiers"][0]["tier"], "fast");
+    assert_eq!(families[0]["tiers"][0]["executed_ratio"], 1.25);
+    assert_eq!(families[0]["tiers"][0]["vgprs"], 40);
+    assert_eq!(families[1]["tiers"][0]["executed_ratio"], 1.5);
+    // The metadata itself is unchanged besides: its name and tiers as built.
+    assert_eq!(meta["name"], "switches");
+    let other: serde_json::Value =
+        serde_json::from_str(body(&get(port, "/api/materials/imaged.json"))).unwrap();
+    assert!(other.get("gpu_model").is_none(), "{other}");
+}
