@@ -199,11 +199,13 @@ pub(crate) fn update_marked(path: &Path, name: &str, content: &str) -> Result<()
 
 /// After `bench gpu-model --write`: the docs' cost tables and plots from the
 /// committed measurements and the new model, without timing anything again
-/// (the tier tables, each material's Pareto plot, shading.md's model section).
+/// (the tier tables, each material's Pareto plot and gallery table,
+/// shading.md's model section).
 pub(crate) fn rewrite_cost_tables(root: &Path) -> Result<(), String> {
     let reports = root.join("generated/reports");
     let model = weft_meta::gpu_model::ModelSummary::load(&reports)?;
     let mut materials = Vec::new();
+    let gallery = root.join("generated/gallery.md");
     for (_, meta) in weft_golden::materials(&root.join("generated"))? {
         let path = reports.join(format!("{}.measurements.json", meta.name));
         let Ok(bytes) = std::fs::read(&path) else {
@@ -214,6 +216,11 @@ pub(crate) fn rewrite_cost_tables(root: &Path) -> Result<(), String> {
         let svg = reports.join(format!("{}.pareto.svg", m.material));
         std::fs::write(&svg, weft_golden::pareto::pareto_svg(&m, Some(&model)))
             .map_err(|e| format!("{}: {e}", svg.display()))?;
+        update_marked(
+            &gallery,
+            &crate::gallery::gallery_marker(&m.material),
+            &weft_golden::cost_tables::gallery_table(&m, &meta.inputs_hash, Some(&model)),
+        )?;
         materials.push(m);
     }
     write_tier_tables(root, &materials)?;

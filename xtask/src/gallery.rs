@@ -6,6 +6,7 @@ use crate::render_sets::render_scenes;
 use std::path::Path;
 use std::process::ExitCode;
 use weft_compiler::output;
+use weft_meta::gpu_model::ModelSummary;
 
 pub(crate) const GALLERY_SIZE: u32 = 160;
 
@@ -63,7 +64,9 @@ pub(crate) fn gallery(root: &Path) -> ExitCode {
             eprintln!("warning: ignoring measurements: {e}");
         }
     }
-    let mut md = gallery_markdown(&sections, &adapter);
+    // The GPU model's columns beside them (absent without gpu-model.json).
+    let model = ModelSummary::load(&generated.join("reports")).ok();
+    let mut md = gallery_markdown(&sections, &adapter, model.as_ref());
     md.push_str(&scenes_markdown(&scenes));
     let write = output::write_atomically(&generated.join("gallery"), &files, &[])
         .and_then(|()| std::fs::write(generated.join("gallery.md"), md));
@@ -135,6 +138,7 @@ pub(crate) fn scenes_markdown(
 pub(crate) fn gallery_markdown(
     sections: &[(weft_meta::MaterialMetadata, Vec<String>)],
     adapter: &str,
+    model: Option<&ModelSummary>,
 ) -> String {
     use std::fmt::Write;
     let mut md = String::new();
@@ -205,17 +209,26 @@ pub(crate) fn gallery_markdown(
         }
         let _ = writeln!(md, "{}\n", tiers_line(m));
         if let Some(ms) = &m.measurements {
+            // Marked, so that a new GPU model rewrites the table without
+            // rendering again (bench_shading::rewrite_cost_tables).
             let _ = writeln!(
                 md,
-                "Cost and accuracy per tier (from `generated/reports/{}.measurements.json`):\n\n{}\n![{} cost vs error](reports/{}.pareto.svg)\n",
+                "Cost and accuracy per tier (from `generated/reports/{}.measurements.json`):\n\n<!-- weft:{}:begin -->\n{}<!-- weft:{}:end -->\n\n![{} cost vs error](reports/{}.pareto.svg)\n",
                 m.name,
-                weft_golden::shading::tier_table(ms, &m.inputs_hash),
+                gallery_marker(&m.name),
+                weft_golden::cost_tables::gallery_table(ms, &m.inputs_hash, model),
+                gallery_marker(&m.name),
                 m.name,
                 m.name
             );
         }
     }
     md
+}
+
+/// The marker name around `material`'s tier table in gallery.md.
+pub(crate) fn gallery_marker(material: &str) -> String {
+    format!("tiers-{material}")
 }
 
 /// The material's tiers and what each computes, one line.
@@ -234,7 +247,7 @@ fn tiers_line(m: &weft_meta::MaterialMetadata) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::tiers_line;
+    use super::{ModelSummary, tiers_line};
 
     /// The committed gallery.md says what the committed metadata and reports
     /// say: each material's description, tiers and measured tier table.
@@ -245,6 +258,7 @@ mod tests {
         let generated = crate::workspace_root().join("generated");
         let md = std::fs::read_to_string(generated.join("gallery.md")).unwrap();
         let rerun = "generated/gallery.md is stale: run `cargo xtask gallery`";
+        let model = ModelSummary::load(&generated.join("reports")).ok();
         for (_, mut m) in weft_golden::materials(&generated).unwrap() {
             let meta_path = generated
                 .join(&m.name)
@@ -255,7 +269,8 @@ mod tests {
             }
             assert!(md.contains(&tiers_line(&m)), "{}: tiers; {rerun}", m.name);
             if let Some(ms) = &m.measurements {
-                let table = weft_golden::shading::tier_table(ms, &m.inputs_hash);
+                let table =
+                    weft_golden::cost_tables::gallery_table(ms, &m.inputs_hash, model.as_ref());
                 assert!(md.contains(&table), "{}: measured tiers; {rerun}", m.name);
             }
         }

@@ -2,6 +2,8 @@
 
 use std::path::{Path, PathBuf};
 use weft_meta::MaterialMetadata;
+use weft_meta::files::{MAX_TEXT_BYTES, read_regular};
+use weft_meta::gpu_model::ModelSummary;
 
 pub(crate) const BENCH_EXAMPLES: &str = "Examples:
   weft bench
@@ -85,6 +87,12 @@ pub(crate) fn print_measurements(m: &mut MaterialMetadata, path: &Path) {
     if let Err(e) = m.attach_measurements(&meta_path) {
         eprintln!("warning: ignoring measurements: {e}");
     }
+    print_measured(m);
+    print_gpu_model(m, &meta_path);
+}
+
+/// The measured table (a rasteriser's timings and the errors).
+fn print_measured(m: &MaterialMetadata) {
     let Some(ms) = &m.measurements else { return };
     let stale = if ms.inputs_hash == m.inputs_hash {
         ""
@@ -126,4 +134,72 @@ pub(crate) fn print_measurements(m: &mut MaterialMetadata, path: &Path) {
             &rows
         )
     );
+}
+
+/// The GPU model's table, apart from the measured one: per AMD family the
+/// tier's loop-aware executed cost ÷ standard fast and its VGPRs / waves,
+/// from `<generated>/reports/gpu-model.json` beside the measurements
+/// (nothing when it is absent).
+fn print_gpu_model(m: &MaterialMetadata, meta_path: &Path) {
+    let generated = meta_path
+        .parent()
+        .and_then(|d| d.parent())
+        .unwrap_or(Path::new("."));
+    let Ok(model) = ModelSummary::load(&generated.join("reports")) else {
+        return;
+    };
+    let families: Vec<_> = model
+        .families
+        .iter()
+        .filter(|f| f.tiers.iter().any(|t| t.material == m.name))
+        .collect();
+    if families.is_empty() {
+        return;
+    }
+    // The model costed the generated files: flag a material changed since.
+    let costed = generated
+        .join(&m.name)
+        .join(format!("{}.meta.json", m.name));
+    let costed_hash = read_regular(&costed, MAX_TEXT_BYTES)
+        .ok()
+        .and_then(|b| serde_json::from_slice::<serde_json::Value>(&b).ok())
+        .and_then(|v| v.get("inputs_hash")?.as_str().map(str::to_string));
+    let stale = if costed_hash.as_deref() == Some(m.inputs_hash.as_str()) {
+        ""
+    } else {
+        " — modelled on an earlier version of the material"
+    };
+    let devices: Vec<String> = families
+        .iter()
+        .map(|f| format!("{}: {}, {}", f.family, f.device_name, f.driver_info))
+        .collect();
+    println!(
+        "\nGPU model (AMD's shader compiler, loop-aware executed cost of the fragment stage ÷ standard fast; {}{stale})",
+        devices.join("; ")
+    );
+    let mut header = vec!["tier".to_string()];
+    for f in &families {
+        header.push(format!("{} x standard fast", f.family));
+        header.push(format!("{} VGPRs / waves", f.family));
+    }
+    let rows: Vec<Vec<String>> = m
+        .tiers
+        .values
+        .iter()
+        .map(|tier| {
+            let mut row = vec![tier.clone()];
+            for f in &families {
+                match f.tier(&m.name, tier) {
+                    Some(c) => {
+                        row.push(format!("{:.2}", c.executed_ratio));
+                        row.push(format!("{} / {}", c.fragment.vgprs, c.fragment.waves));
+                    }
+                    None => row.extend(["-".to_string(), "-".to_string()]),
+                }
+            }
+            row
+        })
+        .collect();
+    let header: Vec<&str> = header.iter().map(String::as_str).collect();
+    print!("{}", weft_cli::tables::table(&header, &rows));
 }

@@ -1,6 +1,7 @@
 //! The tier tables the docs carry, timed cost beside the GPU model: the
-//! README's "Choosing a tier", each material README's ladder and the GPU
-//! model section of `generated/reports/shading.md`.
+//! README's "Choosing a tier", each material README's ladder, the gallery's
+//! per-material table and the GPU model section of
+//! `generated/reports/shading.md`.
 //!
 //! Two sources, never mixed in one column: the shading bench's timed ratio
 //! (`<material>.measurements.json`, llvmpipe on the development machine) and
@@ -184,6 +185,78 @@ pub fn ladder_table(m: &Measurements, model: Option<&ModelSummary>) -> String {
     let _ = write!(
         md,
         "\nTimed by `cargo xtask regenerate --reports` on {} ({}): cost on a {}x{} {} at the defaults; error against the reference, FLIP mean over object pixels, at the defaults and over the error grid (every preset and the defaults × sphere and cloth × key, side and rim light).{}\n",
+        m.adapter,
+        m.timer,
+        m.width,
+        m.height,
+        m.scene,
+        model_note(model)
+    );
+    md
+}
+
+/// One material's tiers for the gallery: the timed figures in full (time,
+/// SPIR-V size, FLIP mean and p99, relative RMSE, worst FLIP over the
+/// grid), then the model's columns, with where and how each was measured.
+pub fn gallery_table(
+    m: &Measurements,
+    current_inputs_hash: &str,
+    model: Option<&ModelSummary>,
+) -> String {
+    let timed = timed_label(std::slice::from_ref(m));
+    let fams = families(model);
+    let mut md = String::new();
+    let _ = write!(
+        md,
+        "| tier | kind | {timed} ms | {timed} × standard fast | SPIR-V instr. |"
+    );
+    let mut rule = String::from("| --- | --- | ---: | ---: | ---: |");
+    for f in &fams {
+        let _ = write!(md, " {f} model × |");
+        rule.push_str(" ---: |");
+    }
+    if let Some(first) = fams.first() {
+        let _ = write!(md, " VGPRs / waves ({first}) |");
+        rule.push_str(" ---: |");
+    }
+    let _ = writeln!(
+        md,
+        " FLIP mean | FLIP p99 | rel. RMSE | FLIP worst (grid) |\n{rule} ---: | ---: | ---: | ---: |"
+    );
+    for t in &m.tiers {
+        let _ = write!(
+            md,
+            "| {} | {} | {:.3} | {} | {} |",
+            t.tier,
+            t.kind.as_deref().unwrap_or("—"),
+            t.gpu_ms,
+            cost_cell(t),
+            t.spirv_instructions,
+        );
+        let costs = model_costs(model, &m.material, &t.tier);
+        for c in &costs {
+            let _ = write!(md, " {} |", ratio(*c));
+        }
+        if let Some(first) = costs.first() {
+            let _ = write!(md, " {} |", regs(*first));
+        }
+        let _ = writeln!(
+            md,
+            " {:.4} | {:.4} | {:.4} | {} |",
+            t.flip_mean,
+            t.flip_p99,
+            t.rel_rmse,
+            t.flip_worst.map_or("—".to_string(), |v| format!("{v:.4}")),
+        );
+    }
+    let stale = if m.inputs_hash != current_inputs_hash {
+        " **Measured on an earlier version of the material: rerun `cargo xtask regenerate --reports`.**"
+    } else {
+        ""
+    };
+    let _ = writeln!(
+        md,
+        "\nMeasured on {} ({}), {}x{} {}, median over frames; error against the reference tier over object pixels.{stale}{}",
         m.adapter,
         m.timer,
         m.width,
@@ -411,5 +484,31 @@ mod tests {
                 .contains("| silk | fast | 0.96 | 535 | 48 / 20 | 1.52 | 535 | 48 / 20 | 1.50 |"),
             "{section}"
         );
+    }
+
+    /// The gallery's table: the timed figures in full, then the model's own
+    /// columns; a stale measurement says so.
+    #[test]
+    fn the_gallery_table_keeps_the_two_sources_apart() {
+        let m = measurements();
+        let md = gallery_table(&m, &m.inputs_hash, Some(&model()));
+        let mut lines = md.lines();
+        assert_eq!(
+            lines.next().unwrap(),
+            "| tier | kind | llvmpipe ms | llvmpipe × standard fast | SPIR-V instr. | navi21 model × | gfx1100 model × | VGPRs / waves (navi21) | FLIP mean | FLIP p99 | rel. RMSE | FLIP worst (grid) |"
+        );
+        lines.next();
+        assert!(
+            lines
+                .next()
+                .unwrap()
+                .starts_with("| fast | approximation | 7.400 | 0.96 | "),
+            "{md}"
+        );
+        assert!(md.contains("| 1.52 | 1.50 | 48 / 20 |"), "{md}");
+        assert!(!md.contains("earlier version"), "{md}");
+        let stale = gallery_table(&m, "another hash", None);
+        assert!(stale.contains("Measured on an earlier version"), "{stale}");
+        assert!(!stale.contains("model ×"), "{stale}");
     }
 }

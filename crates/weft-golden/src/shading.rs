@@ -20,8 +20,7 @@ mod tests;
 pub use measure::run;
 pub(crate) use report::cost_cell;
 pub use report::{
-    describe, floor_line, markdown_report, markdown_table, replace_marked, tier_table,
-    write_reports,
+    describe, floor_line, markdown_report, markdown_table, replace_marked, write_reports,
 };
 pub use spirv::spirv_instruction_counts;
 pub use weft_auto::image_error::{ImageError, flip_map, image_error, quantile};

@@ -123,9 +123,23 @@ fn inspect_and_variants_print_tables() {
         "off | add | multiply",
         "Tiers (reference: reference)",
         "Presets",
+        // The committed reports: measured, and the GPU model apart.
+        "Measured cost and error",
+        "GPU model (AMD's shader compiler",
+        "navi21 x standard fast",
     ] {
         assert!(text.contains(needle), "missing {needle:?} in:\n{text}");
     }
+    // standard `fast` is the model's baseline.
+    let fast = text
+        .lines()
+        .skip_while(|l| !l.starts_with("GPU model"))
+        .find(|l| l.starts_with("fast "))
+        .unwrap_or_default();
+    assert!(
+        fast.split_whitespace().nth(1) == Some("1.00"),
+        "{fast:?} in:\n{text}"
+    );
     let o = weft(&["variants", "materials/standard/standard.toml"]);
     let text = stdout(&o);
     assert!(text.contains("standard: 24 variants"), "{text}");

@@ -138,42 +138,6 @@ pub fn floor_line(report: &ShadingReport) -> String {
     }
 }
 
-/// One material's tiers as a Markdown table (for the gallery), with where
-/// and how they were measured.
-pub fn tier_table(m: &Measurements, current_inputs_hash: &str) -> String {
-    let mut md = String::new();
-    let _ = writeln!(
-        md,
-        "| tier | kind | GPU ms | × standard fast | SPIR-V instr. | FLIP mean | FLIP p99 | rel. RMSE | FLIP worst (grid) |\n| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"
-    );
-    for t in &m.tiers {
-        let _ = writeln!(
-            md,
-            "| {} | {} | {:.3} | {} | {} | {:.4} | {:.4} | {:.4} | {} |",
-            t.tier,
-            t.kind.as_deref().unwrap_or("—"),
-            t.gpu_ms,
-            cost_cell(t),
-            t.spirv_instructions,
-            t.flip_mean,
-            t.flip_p99,
-            t.rel_rmse,
-            t.flip_worst.map_or("—".to_string(), |v| format!("{v:.4}")),
-        );
-    }
-    let stale = if m.inputs_hash != current_inputs_hash {
-        " **Measured on an earlier version of the material: rerun `cargo xtask regenerate --reports`.**"
-    } else {
-        ""
-    };
-    let _ = writeln!(
-        md,
-        "\nMeasured on {} ({}), {}x{} {}, median over frames; error against the reference tier over object pixels.{stale}",
-        m.adapter, m.timer, m.width, m.height, m.scene
-    );
-    md
-}
-
 /// Writes `shading.md` and, per material, `<name>.measurements.json` and
 /// `<name>.pareto.svg` into `dir` (other files there are left alone).
 /// Returns the paths written.
