@@ -55,6 +55,31 @@ fn regs(c: Option<&TierCost>) -> String {
     })
 }
 
+/// The model's header cells: per family its ratio, then VGPRs / waves of the
+/// first family (nothing without a model).
+fn model_header(head: &mut String, rule: &mut String, model: Option<&ModelSummary>) {
+    let fams = families(model);
+    for f in &fams {
+        let _ = write!(head, " {f} model × |");
+        rule.push_str(" ---: |");
+    }
+    if let Some(first) = fams.first() {
+        let _ = write!(head, " VGPRs / waves ({first}) |");
+        rule.push_str(" ---: |");
+    }
+}
+
+/// A row's model cells, matching [`model_header`].
+fn model_cells(row: &mut String, model: Option<&ModelSummary>, material: &str, tier: &str) {
+    let costs = model_costs(model, material, tier);
+    for c in &costs {
+        let _ = write!(row, " {} |", ratio(*c));
+    }
+    if let Some(first) = costs.first() {
+        let _ = write!(row, " {} |", regs(*first));
+    }
+}
+
 /// The compact header: tier columns, the timed ones, then per family the
 /// model's ratio, and VGPRs / waves of the first family.
 fn compact_header(
@@ -63,7 +88,6 @@ fn compact_header(
     with_material: bool,
 ) -> String {
     let timed = timed_label(materials);
-    let fams = families(model);
     let mut head = String::from("|");
     let mut rule = String::from("|");
     if with_material {
@@ -75,14 +99,7 @@ fn compact_header(
         " tier | kind | {timed} ms | {timed} × standard fast |"
     );
     rule.push_str(" --- | --- | ---: | ---: |");
-    for f in &fams {
-        let _ = write!(head, " {f} model × |");
-        rule.push_str(" ---: |");
-    }
-    if let Some(first) = fams.first() {
-        let _ = write!(head, " VGPRs / waves ({first}) |");
-        rule.push_str(" ---: |");
-    }
+    model_header(&mut head, &mut rule, model);
     head.push_str(" FLIP at defaults | worst FLIP over the grid | worst cell |");
     rule.push_str(" ---: | ---: | --- |");
     format!("{head}\n{rule}\n")
@@ -118,13 +135,7 @@ fn compact_rows(
                 t.gpu_ms,
                 cost_cell(t)
             );
-            let costs = model_costs(model, &m.material, &t.tier);
-            for c in &costs {
-                let _ = write!(row, " {} |", ratio(*c));
-            }
-            if let Some(first) = costs.first() {
-                let _ = write!(row, " {} |", regs(*first));
-            }
+            model_cells(&mut row, model, &m.material, &t.tier);
             let _ = writeln!(
                 row,
                 " {} | {} | {} |",
@@ -204,21 +215,9 @@ pub fn gallery_table(
     model: Option<&ModelSummary>,
 ) -> String {
     let timed = timed_label(std::slice::from_ref(m));
-    let fams = families(model);
-    let mut md = String::new();
-    let _ = write!(
-        md,
-        "| tier | kind | {timed} ms | {timed} × standard fast | SPIR-V instr. |"
-    );
+    let mut md = format!("| tier | kind | {timed} ms | {timed} × standard fast | SPIR-V instr. |");
     let mut rule = String::from("| --- | --- | ---: | ---: | ---: |");
-    for f in &fams {
-        let _ = write!(md, " {f} model × |");
-        rule.push_str(" ---: |");
-    }
-    if let Some(first) = fams.first() {
-        let _ = write!(md, " VGPRs / waves ({first}) |");
-        rule.push_str(" ---: |");
-    }
+    model_header(&mut md, &mut rule, model);
     let _ = writeln!(
         md,
         " FLIP mean | FLIP p99 | rel. RMSE | FLIP worst (grid) |\n{rule} ---: | ---: | ---: | ---: |"
@@ -233,13 +232,7 @@ pub fn gallery_table(
             cost_cell(t),
             t.spirv_instructions,
         );
-        let costs = model_costs(model, &m.material, &t.tier);
-        for c in &costs {
-            let _ = write!(md, " {} |", ratio(*c));
-        }
-        if let Some(first) = costs.first() {
-            let _ = write!(md, " {} |", regs(*first));
-        }
+        model_cells(&mut md, model, &m.material, &t.tier);
         let _ = writeln!(
             md,
             " {:.4} | {:.4} | {:.4} | {} |",
