@@ -290,21 +290,22 @@ function tierPanel() {
   table.append(el('tr', {}, el('th', { text: t('Tier') }), el('th', { text: t('ms measured') }), el('th', { text: t('× measured') }),
     ...families.map((f) => el('th', { text: `${f.family} ×`, title: `${modelTip} (${f.device}, ${f.driver})` })),
     ...(families.length ? [el('th', { text: t('VGPRs / waves'), title: `${families[0].device}` })] : []),
-    el('th', { text: t('FLIP mean vs reference') }), el('th', {})));
+    el('th', { text: t('FLIP mean vs reference') })));
   for (const tier of meta.tiers.values) {
     const row = m && m.tiers.find((x) => x.tier === tier);
     const modelled = families.map((f) => f.tiers.find((x) => x.tier === tier));
     const first = modelled[0];
     table.append(el('tr', { class: tier === state.tier ? 'current' : '' },
-      el('td', { text: tier }),
+      el('td', { text: tier, title: text(meta.tiers.descriptions[tier]) }),
       el('td', { text: row ? row.gpu_ms.toFixed(1) : '—' }),
       el('td', { text: row && row.ratio_to_standard_fast ? row.ratio_to_standard_fast.toFixed(2) : '—' }),
       ...modelled.map((c) => el('td', { text: c ? c.executed_ratio.toFixed(2) : '—' })),
       ...(families.length ? [el('td', { text: first ? `${first.vgprs} / ${first.waves}` : '—' })] : []),
-      el('td', { text: row ? row.flip_mean.toFixed(3) : '—' }),
-      el('td', { class: 'desc', text: text(meta.tiers.descriptions[tier]) })));
+      el('td', { text: row ? row.flip_mean.toFixed(3) : '—' })));
   }
   wrap.append(table);
+  // What the chosen tier computes (each tier's in its cell's tooltip).
+  wrap.append(el('p', { class: 'desc', text: text(meta.tiers.descriptions[state.tier]) }));
   if (m) {
     wrap.append(el('p', { class: 'note', text: `${t('measured')}: ${m.adapter}, ${m.width}×${m.height} ${m.scene}` + (m.inputs_hash !== meta.inputs_hash ? ` — ${t('measured on an earlier version of this material')}` : '') }));
   } else wrap.append(el('p', { class: 'note', text: t('no measurements') }));
