@@ -160,22 +160,20 @@ fn weft_sheen_l(x_1: f32, r: f32) -> f32 {
     return (((a / (1f + (b * pow(max(x_1, 0f), c_1)))) + (d * x_1)) + e_1);
 }
 
-fn weft_sheen_lambda(cos_theta: f32, r_1: f32) -> f32 {
+fn weft_sheen_lambda_one_exp(cos_theta: f32, r_1: f32) -> f32 {
     let _e2 = weft_clamp_cos(cos_theta);
-    let _e3 = weft_sheen_l(_e2, r_1);
-    let lo = exp(_e3);
-    let _e6 = weft_sheen_l(0.5f, r_1);
-    let _e11 = weft_sheen_l((1f - _e2), r_1);
-    let hi = exp(((2f * _e6) - _e11));
-    return select(hi, lo, (_e2 < 0.5f));
+    let low = (_e2 < 0.5f);
+    let _e8 = weft_sheen_l(select((1f - _e2), _e2, low), r_1);
+    let _e10 = weft_sheen_l(0.5f, r_1);
+    return exp(select(((2f * _e10) - _e8), _e8, low));
 }
 
 fn weft_v_charlie(n_dot_v: f32, n_dot_l: f32, sheen_roughness_2: f32) -> f32 {
     let _e3 = weft_sheen_clamp_roughness(sheen_roughness_2);
     let _e4 = weft_clamp_cos(n_dot_v);
     let _e5 = weft_clamp_cos(n_dot_l);
-    let _e6 = weft_sheen_lambda(_e4, _e3);
-    let _e9 = weft_sheen_lambda(_e5, _e3);
+    let _e6 = weft_sheen_lambda_one_exp(_e4, _e3);
+    let _e9 = weft_sheen_lambda_one_exp(_e5, _e3);
     let g_inv = ((1f + _e6) + _e9);
     return (1f / (((g_inv * 4f) * _e4) * _e5));
 }

@@ -152,22 +152,20 @@ float weft_sheen_l(float x_1, float r) {
     return (((a / (1.0 + (b * pow(max(x_1, 0.0), c_1)))) + (d * x_1)) + e_1);
 }
 
-float weft_sheen_lambda(float cos_theta, float r_1) {
+float weft_sheen_lambda_one_exp(float cos_theta, float r_1) {
     float _e2 = weft_clamp_cos(cos_theta);
-    float _e3 = weft_sheen_l(_e2, r_1);
-    float lo = exp(_e3);
-    float _e6 = weft_sheen_l(0.5, r_1);
-    float _e11 = weft_sheen_l((1.0 - _e2), r_1);
-    float hi = exp(((2.0 * _e6) - _e11));
-    return ((_e2 < 0.5) ? lo : hi);
+    bool low = (_e2 < 0.5);
+    float _e8 = weft_sheen_l((low ? _e2 : (1.0 - _e2)), r_1);
+    float _e10 = weft_sheen_l(0.5, r_1);
+    return exp((low ? _e8 : ((2.0 * _e10) - _e8)));
 }
 
 float weft_v_charlie(float n_dot_v, float n_dot_l, float sheen_roughness_2) {
     float _e3 = weft_sheen_clamp_roughness(sheen_roughness_2);
     float _e4 = weft_clamp_cos(n_dot_v);
     float _e5 = weft_clamp_cos(n_dot_l);
-    float _e6 = weft_sheen_lambda(_e4, _e3);
-    float _e9 = weft_sheen_lambda(_e5, _e3);
+    float _e6 = weft_sheen_lambda_one_exp(_e4, _e3);
+    float _e9 = weft_sheen_lambda_one_exp(_e5, _e3);
     float g_inv = ((1.0 + _e6) + _e9);
     return (1.0 / (((g_inv * 4.0) * _e4) * _e5));
 }

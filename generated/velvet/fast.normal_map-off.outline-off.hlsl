@@ -75,15 +75,11 @@ static const float WEFT_INV_PI = 0.31830987;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
 static const uint TIER_SEED = 2u;
-static const uint TIER_LOW = 3u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
 static const float WEFT_DIELECTRIC_F0_ = 0.04;
 static const float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
-static const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
-static const float WEFT_MIN_N_DOT_HALF = 0.001;
-static const float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
 TextureCube<float4> weft_environment : register(t1);
@@ -287,15 +283,13 @@ float weft_sheen_l(float x, float r)
     return (((a / (1.0 + (b * pow(max(x, 0.0), c_2)))) + (d * x)) + e_1);
 }
 
-float weft_sheen_lambda(float cos_theta, float r_1)
+float weft_sheen_lambda_one_exp(float cos_theta, float r_1)
 {
     const float _e2 = weft_clamp_cos(cos_theta);
-    const float _e3 = weft_sheen_l(_e2, r_1);
-    float lo = exp(_e3);
-    const float _e6 = weft_sheen_l(0.5, r_1);
-    const float _e11 = weft_sheen_l((1.0 - _e2), r_1);
-    float hi = exp(((2.0 * _e6) - _e11));
-    return ((_e2 < 0.5) ? lo : hi);
+    bool low = (_e2 < 0.5);
+    const float _e8 = weft_sheen_l((low ? _e2 : (1.0 - _e2)), r_1);
+    const float _e10 = weft_sheen_l(0.5, r_1);
+    return exp((low ? _e8 : ((2.0 * _e10) - _e8)));
 }
 
 float weft_v_charlie(float n_dot_v, float n_dot_l, float sheen_roughness_2)
@@ -303,8 +297,8 @@ float weft_v_charlie(float n_dot_v, float n_dot_l, float sheen_roughness_2)
     const float _e3 = weft_sheen_clamp_roughness(sheen_roughness_2);
     const float _e4 = weft_clamp_cos(n_dot_v);
     const float _e5 = weft_clamp_cos(n_dot_l);
-    const float _e6 = weft_sheen_lambda(_e4, _e3);
-    const float _e9 = weft_sheen_lambda(_e5, _e3);
+    const float _e6 = weft_sheen_lambda_one_exp(_e4, _e3);
+    const float _e9 = weft_sheen_lambda_one_exp(_e5, _e3);
     float g_inv = ((1.0 + _e6) + _e9);
     return (1.0 / (((g_inv * 4.0) * _e4) * _e5));
 }
@@ -376,27 +370,25 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     const float3 _e57 = weft_sh_irradiance(_e56);
     float3 ambient = (_e57 * ao);
     {
+        float4 _e62 = material.scatter_color;
+        float3 sheen_color_2 = saturate((f0_ + max(_e62.xyz, (0.0).xxx)));
+        const float _e69 = weft_sheen_clamp_roughness(roughness_2);
+        const float _e71 = weft_sheen_albedo(_e44.n_dot_v, _e69);
+        const float _e72 = weft_sheen_albedo_scaling_view(sheen_color_2, _e71);
         {
-            float4 _e62 = material.scatter_color;
-            float3 sheen_color_2 = saturate((f0_ + max(_e62.xyz, (0.0).xxx)));
-            const float _e69 = weft_sheen_clamp_roughness(roughness_2);
-            const float _e71 = weft_sheen_albedo(_e44.n_dot_v, _e69);
-            const float _e72 = weft_sheen_albedo_scaling_view(sheen_color_2, _e71);
-            {
-                const float3 _e78 = weft_sheen_charlie(sheen_color_2, _e44.n_dot_h, _e44.n_dot_v, _e44.n_dot_l, _e69);
-                sheen = _e78;
-                scaling = _e72;
-            }
-            const float3 _e79 = weft_diffuse_lambert(diffuse_albedo);
-            float _e80 = scaling;
-            float3 base_direct = (_e79 * (_e80 * _e44.n_dot_l));
-            float3 _e84 = sheen;
-            float3 direct = ((_e84 + base_direct) * _e55);
-            float3 _e88 = n;
-            const float3 _e90 = weft_prefiltered_radiance(reflect(-(v_3), _e88), _e69);
-            float3 env_sheen = ((_e90 * sheen_color_2) * (_e71 * ao));
-            color = ((direct + ((ambient * diffuse_albedo) * _e72)) + env_sheen);
+            const float3 _e78 = weft_sheen_charlie(sheen_color_2, _e44.n_dot_h, _e44.n_dot_v, _e44.n_dot_l, _e69);
+            sheen = _e78;
+            scaling = _e72;
         }
+        const float3 _e79 = weft_diffuse_lambert(diffuse_albedo);
+        float _e80 = scaling;
+        float3 base_direct = (_e79 * (_e80 * _e44.n_dot_l));
+        float3 _e84 = sheen;
+        float3 direct = ((_e84 + base_direct) * _e55);
+        float3 _e88 = n;
+        const float3 _e90 = weft_prefiltered_radiance(reflect(-(v_3), _e88), _e69);
+        float3 env_sheen = ((_e90 * sheen_color_2) * (_e71 * ao));
+        color = ((direct + ((ambient * diffuse_albedo) * _e72)) + env_sheen);
     }
     float3 _e98 = color;
     float3 radiance = clamp(_e98, (0.0).xxx, (65504.0).xxx);

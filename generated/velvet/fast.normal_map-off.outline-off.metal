@@ -71,15 +71,11 @@ constant float WEFT_INV_PI = 0.31830987;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
 constant uint TIER_SEED = 2u;
-constant uint TIER_LOW = 3u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
 constant float WEFT_DIELECTRIC_F0_ = 0.04;
 constant float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
-constant float WEFT_MIN_ROUGHNESS_HALF = 0.089;
-constant float WEFT_MIN_N_DOT_HALF = 0.001;
-constant float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 float weft_max3_(
     metal::float3 v
@@ -264,17 +260,15 @@ float weft_sheen_l(
     return ((a / (1.0 + (b * metal::pow(metal::max(x, 0.0), c_2)))) + (d * x)) + e_1;
 }
 
-float weft_sheen_lambda(
+float weft_sheen_lambda_one_exp(
     float cos_theta,
     float r_1
 ) {
     float _e2 = weft_clamp_cos(cos_theta);
-    float _e3 = weft_sheen_l(_e2, r_1);
-    float lo = metal::exp(_e3);
-    float _e6 = weft_sheen_l(0.5, r_1);
-    float _e11 = weft_sheen_l(1.0 - _e2, r_1);
-    float hi = metal::exp((2.0 * _e6) - _e11);
-    return (_e2 < 0.5) ? lo : hi;
+    bool low = _e2 < 0.5;
+    float _e8 = weft_sheen_l(low ? _e2 : (1.0 - _e2), r_1);
+    float _e10 = weft_sheen_l(0.5, r_1);
+    return metal::exp(low ? _e8 : ((2.0 * _e10) - _e8));
 }
 
 float weft_v_charlie(
@@ -285,8 +279,8 @@ float weft_v_charlie(
     float _e3 = weft_sheen_clamp_roughness(sheen_roughness_2);
     float _e4 = weft_clamp_cos(n_dot_v);
     float _e5 = weft_clamp_cos(n_dot_l);
-    float _e6 = weft_sheen_lambda(_e4, _e3);
-    float _e9 = weft_sheen_lambda(_e5, _e3);
+    float _e6 = weft_sheen_lambda_one_exp(_e4, _e3);
+    float _e9 = weft_sheen_lambda_one_exp(_e5, _e3);
     float g_inv = (1.0 + _e6) + _e9;
     return 1.0 / (((g_inv * 4.0) * _e4) * _e5);
 }
@@ -405,27 +399,25 @@ fragment fs_mainOutput fs_main(
     metal::float3 _e57 = weft_sh_irradiance(_e56, weft_frame);
     metal::float3 ambient = _e57 * ao;
     {
+        metal::float4 _e62 = material.scatter_color;
+        metal::float3 sheen_color_2 = metal::saturate(f0_ + metal::max(_e62.xyz, metal::float3(0.0)));
+        float _e69 = weft_sheen_clamp_roughness(roughness_2);
+        float _e71 = weft_sheen_albedo(_e44.n_dot_v, _e69, weft_lut_sampler, weft_sheen_lut);
+        float _e72 = weft_sheen_albedo_scaling_view(sheen_color_2, _e71);
         {
-            metal::float4 _e62 = material.scatter_color;
-            metal::float3 sheen_color_2 = metal::saturate(f0_ + metal::max(_e62.xyz, metal::float3(0.0)));
-            float _e69 = weft_sheen_clamp_roughness(roughness_2);
-            float _e71 = weft_sheen_albedo(_e44.n_dot_v, _e69, weft_lut_sampler, weft_sheen_lut);
-            float _e72 = weft_sheen_albedo_scaling_view(sheen_color_2, _e71);
-            {
-                metal::float3 _e78 = weft_sheen_charlie(sheen_color_2, _e44.n_dot_h, _e44.n_dot_v, _e44.n_dot_l, _e69);
-                sheen = _e78;
-                scaling = _e72;
-            }
-            metal::float3 _e79 = weft_diffuse_lambert(diffuse_albedo);
-            float _e80 = scaling;
-            metal::float3 base_direct = _e79 * (_e80 * _e44.n_dot_l);
-            metal::float3 _e84 = sheen;
-            metal::float3 direct = (_e84 + base_direct) * _e55;
-            metal::float3 _e88 = n;
-            metal::float3 _e90 = weft_prefiltered_radiance(metal::reflect(-(v_3), _e88), _e69, weft_frame, weft_environment, weft_environment_sampler);
-            metal::float3 env_sheen = (_e90 * sheen_color_2) * (_e71 * ao);
-            color = (direct + ((ambient * diffuse_albedo) * _e72)) + env_sheen;
+            metal::float3 _e78 = weft_sheen_charlie(sheen_color_2, _e44.n_dot_h, _e44.n_dot_v, _e44.n_dot_l, _e69);
+            sheen = _e78;
+            scaling = _e72;
         }
+        metal::float3 _e79 = weft_diffuse_lambert(diffuse_albedo);
+        float _e80 = scaling;
+        metal::float3 base_direct = _e79 * (_e80 * _e44.n_dot_l);
+        metal::float3 _e84 = sheen;
+        metal::float3 direct = (_e84 + base_direct) * _e55;
+        metal::float3 _e88 = n;
+        metal::float3 _e90 = weft_prefiltered_radiance(metal::reflect(-(v_3), _e88), _e69, weft_frame, weft_environment, weft_environment_sampler);
+        metal::float3 env_sheen = (_e90 * sheen_color_2) * (_e71 * ao);
+        color = (direct + ((ambient * diffuse_albedo) * _e72)) + env_sheen;
     }
     metal::float3 _e98 = color;
     metal::float3 radiance = metal::clamp(_e98, metal::float3(0.0), metal::float3(65504.0));

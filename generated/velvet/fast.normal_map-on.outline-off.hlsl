@@ -75,15 +75,11 @@ static const float WEFT_INV_PI = 0.31830987;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
 static const uint TIER_SEED = 2u;
-static const uint TIER_LOW = 3u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
 static const float WEFT_DIELECTRIC_F0_ = 0.04;
 static const float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
-static const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
-static const float WEFT_MIN_N_DOT_HALF = 0.001;
-static const float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
 TextureCube<float4> weft_environment : register(t1);
@@ -329,15 +325,13 @@ float weft_sheen_l(float x, float r)
     return (((a_1 / (1.0 + (b_2 * pow(max(x, 0.0), c_2)))) + (d * x)) + e_1);
 }
 
-float weft_sheen_lambda(float cos_theta, float r_1)
+float weft_sheen_lambda_one_exp(float cos_theta, float r_1)
 {
     const float _e2 = weft_clamp_cos(cos_theta);
-    const float _e3 = weft_sheen_l(_e2, r_1);
-    float lo = exp(_e3);
-    const float _e6 = weft_sheen_l(0.5, r_1);
-    const float _e11 = weft_sheen_l((1.0 - _e2), r_1);
-    float hi = exp(((2.0 * _e6) - _e11));
-    return ((_e2 < 0.5) ? lo : hi);
+    bool low = (_e2 < 0.5);
+    const float _e8 = weft_sheen_l((low ? _e2 : (1.0 - _e2)), r_1);
+    const float _e10 = weft_sheen_l(0.5, r_1);
+    return exp((low ? _e8 : ((2.0 * _e10) - _e8)));
 }
 
 float weft_v_charlie(float n_dot_v, float n_dot_l, float sheen_roughness_2)
@@ -345,8 +339,8 @@ float weft_v_charlie(float n_dot_v, float n_dot_l, float sheen_roughness_2)
     const float _e3 = weft_sheen_clamp_roughness(sheen_roughness_2);
     const float _e4 = weft_clamp_cos(n_dot_v);
     const float _e5 = weft_clamp_cos(n_dot_l);
-    const float _e6 = weft_sheen_lambda(_e4, _e3);
-    const float _e9 = weft_sheen_lambda(_e5, _e3);
+    const float _e6 = weft_sheen_lambda_one_exp(_e4, _e3);
+    const float _e9 = weft_sheen_lambda_one_exp(_e5, _e3);
     float g_inv = ((1.0 + _e6) + _e9);
     return (1.0 / (((g_inv * 4.0) * _e4) * _e5));
 }
@@ -426,27 +420,25 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     const float3 _e67 = weft_sh_irradiance(_e66);
     float3 ambient = (_e67 * ao);
     {
+        float4 _e72 = material.scatter_color;
+        float3 sheen_color_2 = saturate((f0_ + max(_e72.xyz, (0.0).xxx)));
+        const float _e79 = weft_sheen_clamp_roughness(roughness_2);
+        const float _e81 = weft_sheen_albedo(_e54.n_dot_v, _e79);
+        const float _e82 = weft_sheen_albedo_scaling_view(sheen_color_2, _e81);
         {
-            float4 _e72 = material.scatter_color;
-            float3 sheen_color_2 = saturate((f0_ + max(_e72.xyz, (0.0).xxx)));
-            const float _e79 = weft_sheen_clamp_roughness(roughness_2);
-            const float _e81 = weft_sheen_albedo(_e54.n_dot_v, _e79);
-            const float _e82 = weft_sheen_albedo_scaling_view(sheen_color_2, _e81);
-            {
-                const float3 _e88 = weft_sheen_charlie(sheen_color_2, _e54.n_dot_h, _e54.n_dot_v, _e54.n_dot_l, _e79);
-                sheen = _e88;
-                scaling = _e82;
-            }
-            const float3 _e89 = weft_diffuse_lambert(diffuse_albedo);
-            float _e90 = scaling;
-            float3 base_direct = (_e89 * (_e90 * _e54.n_dot_l));
-            float3 _e94 = sheen;
-            float3 direct = ((_e94 + base_direct) * _e65);
-            float3 _e98 = n;
-            const float3 _e100 = weft_prefiltered_radiance(reflect(-(v_4), _e98), _e79);
-            float3 env_sheen = ((_e100 * sheen_color_2) * (_e81 * ao));
-            color = ((direct + ((ambient * diffuse_albedo) * _e82)) + env_sheen);
+            const float3 _e88 = weft_sheen_charlie(sheen_color_2, _e54.n_dot_h, _e54.n_dot_v, _e54.n_dot_l, _e79);
+            sheen = _e88;
+            scaling = _e82;
         }
+        const float3 _e89 = weft_diffuse_lambert(diffuse_albedo);
+        float _e90 = scaling;
+        float3 base_direct = (_e89 * (_e90 * _e54.n_dot_l));
+        float3 _e94 = sheen;
+        float3 direct = ((_e94 + base_direct) * _e65);
+        float3 _e98 = n;
+        const float3 _e100 = weft_prefiltered_radiance(reflect(-(v_4), _e98), _e79);
+        float3 env_sheen = ((_e100 * sheen_color_2) * (_e81 * ao));
+        color = ((direct + ((ambient * diffuse_albedo) * _e82)) + env_sheen);
     }
     float3 _e108 = color;
     float3 radiance = clamp(_e108, (0.0).xxx, (65504.0).xxx);

@@ -62,15 +62,11 @@ const WEFT_INV_PI: f32 = 0.31830987f;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
 const TIER_SEED: u32 = 2u;
-const TIER_LOW: u32 = 3u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
 const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
 const WEFT_SHEEN_MIN_ROUGHNESS: f32 = 0.07f;
-const WEFT_MIN_ROUGHNESS_HALF: f32 = 0.089f;
-const WEFT_MIN_N_DOT_HALF: f32 = 0.001f;
-const WEFT_MIN_ALPHA_HALF: f32 = 0.007921f;
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
@@ -226,22 +222,20 @@ fn weft_sheen_l(x: f32, r: f32) -> f32 {
     return (((a / (1f + (b * pow(max(x, 0f), c_2)))) + (d * x)) + e_1);
 }
 
-fn weft_sheen_lambda(cos_theta: f32, r_1: f32) -> f32 {
+fn weft_sheen_lambda_one_exp(cos_theta: f32, r_1: f32) -> f32 {
     let _e2 = weft_clamp_cos(cos_theta);
-    let _e3 = weft_sheen_l(_e2, r_1);
-    let lo = exp(_e3);
-    let _e6 = weft_sheen_l(0.5f, r_1);
-    let _e11 = weft_sheen_l((1f - _e2), r_1);
-    let hi = exp(((2f * _e6) - _e11));
-    return select(hi, lo, (_e2 < 0.5f));
+    let low = (_e2 < 0.5f);
+    let _e8 = weft_sheen_l(select((1f - _e2), _e2, low), r_1);
+    let _e10 = weft_sheen_l(0.5f, r_1);
+    return exp(select(((2f * _e10) - _e8), _e8, low));
 }
 
 fn weft_v_charlie(n_dot_v: f32, n_dot_l: f32, sheen_roughness_2: f32) -> f32 {
     let _e3 = weft_sheen_clamp_roughness(sheen_roughness_2);
     let _e4 = weft_clamp_cos(n_dot_v);
     let _e5 = weft_clamp_cos(n_dot_l);
-    let _e6 = weft_sheen_lambda(_e4, _e3);
-    let _e9 = weft_sheen_lambda(_e5, _e3);
+    let _e6 = weft_sheen_lambda_one_exp(_e4, _e3);
+    let _e9 = weft_sheen_lambda_one_exp(_e5, _e3);
     let g_inv = ((1f + _e6) + _e9);
     return (1f / (((g_inv * 4f) * _e4) * _e5));
 }
@@ -313,29 +307,27 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e57 = weft_sh_irradiance(_e56);
     let ambient = (_e57 * ao);
     {
+        let _e62 = material.scatter_color;
+        let sheen_color_3 = saturate((f0_ + max(_e62.xyz, vec3(0f))));
+        let _e69 = weft_sheen_clamp_roughness(roughness_2);
+        let _e71 = weft_sheen_albedo(_e44.n_dot_v, _e69);
+        let _e72 = weft_sheen_albedo_scaling_view(sheen_color_3, _e71);
         {
-            let _e62 = material.scatter_color;
-            let sheen_color_3 = saturate((f0_ + max(_e62.xyz, vec3(0f))));
-            let _e69 = weft_sheen_clamp_roughness(roughness_2);
-            let _e71 = weft_sheen_albedo(_e44.n_dot_v, _e69);
-            let _e72 = weft_sheen_albedo_scaling_view(sheen_color_3, _e71);
-            {
-                let _e76 = weft_sheen_albedo(_e44.n_dot_l, _e69);
-                let _e80 = weft_sheen_charlie(sheen_color_3, _e44.n_dot_h, _e44.n_dot_v, _e44.n_dot_l, _e69);
-                sheen = _e80;
-                let _e81 = weft_sheen_albedo_scaling(sheen_color_3, _e71, _e76);
-                scaling = _e81;
-            }
-            let _e82 = weft_diffuse_lambert(diffuse_albedo);
-            let _e83 = scaling;
-            let base_direct = (_e82 * (_e83 * _e44.n_dot_l));
-            let _e87 = sheen;
-            let direct = ((_e87 + base_direct) * _e55);
-            let _e91 = n;
-            let _e93 = weft_prefiltered_radiance(reflect(-(v_3), _e91), _e69);
-            let env_sheen = ((_e93 * sheen_color_3) * (_e71 * ao));
-            color = ((direct + ((ambient * diffuse_albedo) * _e72)) + env_sheen);
+            let _e76 = weft_sheen_albedo(_e44.n_dot_l, _e69);
+            let _e80 = weft_sheen_charlie(sheen_color_3, _e44.n_dot_h, _e44.n_dot_v, _e44.n_dot_l, _e69);
+            sheen = _e80;
+            let _e81 = weft_sheen_albedo_scaling(sheen_color_3, _e71, _e76);
+            scaling = _e81;
         }
+        let _e82 = weft_diffuse_lambert(diffuse_albedo);
+        let _e83 = scaling;
+        let base_direct = (_e82 * (_e83 * _e44.n_dot_l));
+        let _e87 = sheen;
+        let direct = ((_e87 + base_direct) * _e55);
+        let _e91 = n;
+        let _e93 = weft_prefiltered_radiance(reflect(-(v_3), _e91), _e69);
+        let env_sheen = ((_e93 * sheen_color_3) * (_e71 * ao));
+        color = ((direct + ((ambient * diffuse_albedo) * _e72)) + env_sheen);
     }
     let _e101 = color;
     let radiance = clamp(_e101, vec3(0f), vec3(65504f));

@@ -56,15 +56,11 @@ const float WEFT_INV_PI = 0.31830987;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
 const uint TIER_SEED = 2u;
-const uint TIER_LOW = 3u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
 const float WEFT_DIELECTRIC_F0_ = 0.04;
 const float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
-const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
-const float WEFT_MIN_N_DOT_HALF = 0.001;
-const float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
 
@@ -240,22 +236,20 @@ float weft_sheen_l(float x, float r) {
     return (((a_1 / (1.0 + (b_2 * pow(max(x, 0.0), c_1)))) + (d * x)) + e_1);
 }
 
-float weft_sheen_lambda(float cos_theta, float r_1) {
+float weft_sheen_lambda_one_exp(float cos_theta, float r_1) {
     float _e2 = weft_clamp_cos(cos_theta);
-    float _e3 = weft_sheen_l(_e2, r_1);
-    float lo = exp(_e3);
-    float _e6 = weft_sheen_l(0.5, r_1);
-    float _e11 = weft_sheen_l((1.0 - _e2), r_1);
-    float hi = exp(((2.0 * _e6) - _e11));
-    return ((_e2 < 0.5) ? lo : hi);
+    bool low = (_e2 < 0.5);
+    float _e8 = weft_sheen_l((low ? _e2 : (1.0 - _e2)), r_1);
+    float _e10 = weft_sheen_l(0.5, r_1);
+    return exp((low ? _e8 : ((2.0 * _e10) - _e8)));
 }
 
 float weft_v_charlie(float n_dot_v, float n_dot_l, float sheen_roughness_2) {
     float _e3 = weft_sheen_clamp_roughness(sheen_roughness_2);
     float _e4 = weft_clamp_cos(n_dot_v);
     float _e5 = weft_clamp_cos(n_dot_l);
-    float _e6 = weft_sheen_lambda(_e4, _e3);
-    float _e9 = weft_sheen_lambda(_e5, _e3);
+    float _e6 = weft_sheen_lambda_one_exp(_e4, _e3);
+    float _e9 = weft_sheen_lambda_one_exp(_e5, _e3);
     float g_inv = ((1.0 + _e6) + _e9);
     return (1.0 / (((g_inv * 4.0) * _e4) * _e5));
 }

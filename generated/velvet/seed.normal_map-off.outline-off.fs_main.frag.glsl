@@ -56,15 +56,11 @@ const float WEFT_INV_PI = 0.31830987;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
 const uint TIER_SEED = 2u;
-const uint TIER_LOW = 3u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
 const float WEFT_DIELECTRIC_F0_ = 0.04;
 const float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
-const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
-const float WEFT_MIN_N_DOT_HALF = 0.001;
-const float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
 
@@ -231,18 +227,16 @@ void main() {
     vec3 _e57 = weft_sh_irradiance(_e56);
     vec3 ambient = (_e57 * ao);
     {
-        {
-            float _e62 = weft_v_schlick_ggx(_e44.n_dot_v, _e44.n_dot_l, roughness_2);
-            vec3 _e63 = weft_f_schlick(f0_1, l_dot_h);
-            float _e65 = weft_fabric_d(_e44.n_dot_h);
-            vec3 specular = ((_e65 * _e62) * _e63);
-            vec3 _e68 = weft_diffuse_lambert(diffuse_albedo);
-            vec3 direct = (((_e68 + specular) * _e55) * _e44.n_dot_l);
-            vec4 _e75 = _group_1_binding_0_fs.scatter_color;
-            float _e81 = _group_1_binding_0_fs.scatter_scale;
-            vec3 _e82 = weft_fabric_scatter(_e75.xyz, _e44.n_dot_l, _e44.n_dot_v, _e81);
-            color = ((direct + (ambient * diffuse_albedo)) + _e82);
-        }
+        float _e62 = weft_v_schlick_ggx(_e44.n_dot_v, _e44.n_dot_l, roughness_2);
+        vec3 _e63 = weft_f_schlick(f0_1, l_dot_h);
+        float _e65 = weft_fabric_d(_e44.n_dot_h);
+        vec3 specular = ((_e65 * _e62) * _e63);
+        vec3 _e68 = weft_diffuse_lambert(diffuse_albedo);
+        vec3 direct = (((_e68 + specular) * _e55) * _e44.n_dot_l);
+        vec4 _e75 = _group_1_binding_0_fs.scatter_color;
+        float _e81 = _group_1_binding_0_fs.scatter_scale;
+        vec3 _e82 = weft_fabric_scatter(_e75.xyz, _e44.n_dot_l, _e44.n_dot_v, _e81);
+        color = ((direct + (ambient * diffuse_albedo)) + _e82);
     }
     vec3 _e86 = color;
     vec3 radiance = clamp(_e86, vec3(0.0), vec3(65504.0));

@@ -75,15 +75,11 @@ static const float WEFT_INV_PI = 0.31830987;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
 static const uint TIER_SEED = 2u;
-static const uint TIER_LOW = 3u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
 static const float WEFT_DIELECTRIC_F0_ = 0.04;
 static const float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
-static const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
-static const float WEFT_MIN_N_DOT_HALF = 0.001;
-static const float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
@@ -335,18 +331,16 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     const float3 _e57 = weft_sh_irradiance(_e56);
     float3 ambient = (_e57 * ao);
     {
-        {
-            const float _e62 = weft_v_schlick_ggx(_e44.n_dot_v, _e44.n_dot_l, roughness_2);
-            const float3 _e63 = weft_f_schlick(f0_1, l_dot_h);
-            const float _e65 = weft_fabric_d(_e44.n_dot_h);
-            float3 specular = ((_e65 * _e62) * _e63);
-            const float3 _e68 = weft_diffuse_lambert(diffuse_albedo);
-            float3 direct = (((_e68 + specular) * _e55) * _e44.n_dot_l);
-            float4 _e75 = material.scatter_color;
-            float _e81 = material.scatter_scale;
-            const float3 _e82 = weft_fabric_scatter(_e75.xyz, _e44.n_dot_l, _e44.n_dot_v, _e81);
-            color = ((direct + (ambient * diffuse_albedo)) + _e82);
-        }
+        const float _e62 = weft_v_schlick_ggx(_e44.n_dot_v, _e44.n_dot_l, roughness_2);
+        const float3 _e63 = weft_f_schlick(f0_1, l_dot_h);
+        const float _e65 = weft_fabric_d(_e44.n_dot_h);
+        float3 specular = ((_e65 * _e62) * _e63);
+        const float3 _e68 = weft_diffuse_lambert(diffuse_albedo);
+        float3 direct = (((_e68 + specular) * _e55) * _e44.n_dot_l);
+        float4 _e75 = material.scatter_color;
+        float _e81 = material.scatter_scale;
+        const float3 _e82 = weft_fabric_scatter(_e75.xyz, _e44.n_dot_l, _e44.n_dot_v, _e81);
+        color = ((direct + (ambient * diffuse_albedo)) + _e82);
     }
     float3 _e86 = color;
     float3 radiance = clamp(_e86, (0.0).xxx, (65504.0).xxx);

@@ -71,15 +71,11 @@ constant float WEFT_INV_PI = 0.31830987;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
 constant uint TIER_SEED = 2u;
-constant uint TIER_LOW = 3u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
 constant float WEFT_DIELECTRIC_F0_ = 0.04;
 constant float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
-constant float WEFT_MIN_ROUGHNESS_HALF = 0.089;
-constant float WEFT_MIN_N_DOT_HALF = 0.001;
-constant float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 float weft_pow4_(
     float x
@@ -351,18 +347,16 @@ fragment fs_mainOutput fs_main(
     metal::float3 _e57 = weft_sh_irradiance(_e56, weft_frame);
     metal::float3 ambient = _e57 * ao;
     {
-        {
-            float _e62 = weft_v_schlick_ggx(_e44.n_dot_v, _e44.n_dot_l, roughness_2);
-            metal::float3 _e63 = weft_f_schlick(f0_1, l_dot_h);
-            float _e65 = weft_fabric_d(_e44.n_dot_h);
-            metal::float3 specular = (_e65 * _e62) * _e63;
-            metal::float3 _e68 = weft_diffuse_lambert(diffuse_albedo);
-            metal::float3 direct = ((_e68 + specular) * _e55) * _e44.n_dot_l;
-            metal::float4 _e75 = material.scatter_color;
-            float _e81 = material.scatter_scale;
-            metal::float3 _e82 = weft_fabric_scatter(_e75.xyz, _e44.n_dot_l, _e44.n_dot_v, _e81);
-            color = (direct + (ambient * diffuse_albedo)) + _e82;
-        }
+        float _e62 = weft_v_schlick_ggx(_e44.n_dot_v, _e44.n_dot_l, roughness_2);
+        metal::float3 _e63 = weft_f_schlick(f0_1, l_dot_h);
+        float _e65 = weft_fabric_d(_e44.n_dot_h);
+        metal::float3 specular = (_e65 * _e62) * _e63;
+        metal::float3 _e68 = weft_diffuse_lambert(diffuse_albedo);
+        metal::float3 direct = ((_e68 + specular) * _e55) * _e44.n_dot_l;
+        metal::float4 _e75 = material.scatter_color;
+        float _e81 = material.scatter_scale;
+        metal::float3 _e82 = weft_fabric_scatter(_e75.xyz, _e44.n_dot_l, _e44.n_dot_v, _e81);
+        color = (direct + (ambient * diffuse_albedo)) + _e82;
     }
     metal::float3 _e86 = color;
     metal::float3 radiance = metal::clamp(_e86, metal::float3(0.0), metal::float3(65504.0));

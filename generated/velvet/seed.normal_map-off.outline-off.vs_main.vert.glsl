@@ -56,15 +56,11 @@ const float WEFT_INV_PI = 0.31830987;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
 const uint TIER_SEED = 2u;
-const uint TIER_LOW = 3u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
 const float WEFT_DIELECTRIC_F0_ = 0.04;
 const float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
-const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
-const float WEFT_MIN_N_DOT_HALF = 0.001;
-const float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
 

@@ -62,15 +62,11 @@ const WEFT_INV_PI: f32 = 0.31830987f;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
 const TIER_SEED: u32 = 2u;
-const TIER_LOW: u32 = 3u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
 const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
 const WEFT_SHEEN_MIN_ROUGHNESS: f32 = 0.07f;
-const WEFT_MIN_ROUGHNESS_HALF: f32 = 0.089f;
-const WEFT_MIN_N_DOT_HALF: f32 = 0.001f;
-const WEFT_MIN_ALPHA_HALF: f32 = 0.007921f;
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
@@ -266,18 +262,16 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e57 = weft_sh_irradiance(_e56);
     let ambient = (_e57 * ao);
     {
-        {
-            let _e62 = weft_v_schlick_ggx(_e44.n_dot_v, _e44.n_dot_l, roughness_2);
-            let _e63 = weft_f_schlick(f0_1, l_dot_h);
-            let _e65 = weft_fabric_d(_e44.n_dot_h);
-            let specular = ((_e65 * _e62) * _e63);
-            let _e68 = weft_diffuse_lambert(diffuse_albedo);
-            let direct = (((_e68 + specular) * _e55) * _e44.n_dot_l);
-            let _e75 = material.scatter_color;
-            let _e81 = material.scatter_scale;
-            let _e82 = weft_fabric_scatter(_e75.xyz, _e44.n_dot_l, _e44.n_dot_v, _e81);
-            color = ((direct + (ambient * diffuse_albedo)) + _e82);
-        }
+        let _e62 = weft_v_schlick_ggx(_e44.n_dot_v, _e44.n_dot_l, roughness_2);
+        let _e63 = weft_f_schlick(f0_1, l_dot_h);
+        let _e65 = weft_fabric_d(_e44.n_dot_h);
+        let specular = ((_e65 * _e62) * _e63);
+        let _e68 = weft_diffuse_lambert(diffuse_albedo);
+        let direct = (((_e68 + specular) * _e55) * _e44.n_dot_l);
+        let _e75 = material.scatter_color;
+        let _e81 = material.scatter_scale;
+        let _e82 = weft_fabric_scatter(_e75.xyz, _e44.n_dot_l, _e44.n_dot_v, _e81);
+        color = ((direct + (ambient * diffuse_albedo)) + _e82);
     }
     let _e86 = color;
     let radiance = clamp(_e86, vec3(0f), vec3(65504f));

@@ -56,15 +56,11 @@ const float WEFT_INV_PI = 0.31830987;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
 const uint TIER_SEED = 2u;
-const uint TIER_LOW = 3u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
 const float WEFT_DIELECTRIC_F0_ = 0.04;
 const float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
-const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
-const float WEFT_MIN_N_DOT_HALF = 0.001;
-const float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
 
@@ -277,18 +273,16 @@ void main() {
     vec3 _e67 = weft_sh_irradiance(_e66);
     vec3 ambient = (_e67 * ao);
     {
-        {
-            float _e72 = weft_v_schlick_ggx(_e54.n_dot_v, _e54.n_dot_l, roughness_2);
-            vec3 _e73 = weft_f_schlick(f0_1, l_dot_h);
-            float _e75 = weft_fabric_d(_e54.n_dot_h);
-            vec3 specular = ((_e75 * _e72) * _e73);
-            vec3 _e78 = weft_diffuse_lambert(diffuse_albedo);
-            vec3 direct = (((_e78 + specular) * _e65) * _e54.n_dot_l);
-            vec4 _e85 = _group_1_binding_0_fs.scatter_color;
-            float _e91 = _group_1_binding_0_fs.scatter_scale;
-            vec3 _e92 = weft_fabric_scatter(_e85.xyz, _e54.n_dot_l, _e54.n_dot_v, _e91);
-            color = ((direct + (ambient * diffuse_albedo)) + _e92);
-        }
+        float _e72 = weft_v_schlick_ggx(_e54.n_dot_v, _e54.n_dot_l, roughness_2);
+        vec3 _e73 = weft_f_schlick(f0_1, l_dot_h);
+        float _e75 = weft_fabric_d(_e54.n_dot_h);
+        vec3 specular = ((_e75 * _e72) * _e73);
+        vec3 _e78 = weft_diffuse_lambert(diffuse_albedo);
+        vec3 direct = (((_e78 + specular) * _e65) * _e54.n_dot_l);
+        vec4 _e85 = _group_1_binding_0_fs.scatter_color;
+        float _e91 = _group_1_binding_0_fs.scatter_scale;
+        vec3 _e92 = weft_fabric_scatter(_e85.xyz, _e54.n_dot_l, _e54.n_dot_v, _e91);
+        color = ((direct + (ambient * diffuse_albedo)) + _e92);
     }
     vec3 _e96 = color;
     vec3 radiance = clamp(_e96, vec3(0.0), vec3(65504.0));

@@ -75,15 +75,11 @@ static const float WEFT_INV_PI = 0.31830987;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
 static const uint TIER_SEED = 2u;
-static const uint TIER_LOW = 3u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
 static const float WEFT_DIELECTRIC_F0_ = 0.04;
 static const float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
-static const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
-static const float WEFT_MIN_N_DOT_HALF = 0.001;
-static const float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
@@ -385,18 +381,16 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     const float3 _e67 = weft_sh_irradiance(_e66);
     float3 ambient = (_e67 * ao);
     {
-        {
-            const float _e72 = weft_v_schlick_ggx(_e54.n_dot_v, _e54.n_dot_l, roughness_2);
-            const float3 _e73 = weft_f_schlick(f0_1, l_dot_h);
-            const float _e75 = weft_fabric_d(_e54.n_dot_h);
-            float3 specular = ((_e75 * _e72) * _e73);
-            const float3 _e78 = weft_diffuse_lambert(diffuse_albedo);
-            float3 direct = (((_e78 + specular) * _e65) * _e54.n_dot_l);
-            float4 _e85 = material.scatter_color;
-            float _e91 = material.scatter_scale;
-            const float3 _e92 = weft_fabric_scatter(_e85.xyz, _e54.n_dot_l, _e54.n_dot_v, _e91);
-            color = ((direct + (ambient * diffuse_albedo)) + _e92);
-        }
+        const float _e72 = weft_v_schlick_ggx(_e54.n_dot_v, _e54.n_dot_l, roughness_2);
+        const float3 _e73 = weft_f_schlick(f0_1, l_dot_h);
+        const float _e75 = weft_fabric_d(_e54.n_dot_h);
+        float3 specular = ((_e75 * _e72) * _e73);
+        const float3 _e78 = weft_diffuse_lambert(diffuse_albedo);
+        float3 direct = (((_e78 + specular) * _e65) * _e54.n_dot_l);
+        float4 _e85 = material.scatter_color;
+        float _e91 = material.scatter_scale;
+        const float3 _e92 = weft_fabric_scatter(_e85.xyz, _e54.n_dot_l, _e54.n_dot_v, _e91);
+        color = ((direct + (ambient * diffuse_albedo)) + _e92);
     }
     float3 _e96 = color;
     float3 radiance = clamp(_e96, (0.0).xxx, (65504.0).xxx);

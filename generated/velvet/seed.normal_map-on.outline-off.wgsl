@@ -62,15 +62,11 @@ const WEFT_INV_PI: f32 = 0.31830987f;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
 const TIER_SEED: u32 = 2u;
-const TIER_LOW: u32 = 3u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
 const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
 const WEFT_SHEEN_MIN_ROUGHNESS: f32 = 0.07f;
-const WEFT_MIN_ROUGHNESS_HALF: f32 = 0.089f;
-const WEFT_MIN_N_DOT_HALF: f32 = 0.001f;
-const WEFT_MIN_ALPHA_HALF: f32 = 0.007921f;
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
@@ -312,18 +308,16 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e67 = weft_sh_irradiance(_e66);
     let ambient = (_e67 * ao);
     {
-        {
-            let _e72 = weft_v_schlick_ggx(_e54.n_dot_v, _e54.n_dot_l, roughness_2);
-            let _e73 = weft_f_schlick(f0_1, l_dot_h);
-            let _e75 = weft_fabric_d(_e54.n_dot_h);
-            let specular = ((_e75 * _e72) * _e73);
-            let _e78 = weft_diffuse_lambert(diffuse_albedo);
-            let direct = (((_e78 + specular) * _e65) * _e54.n_dot_l);
-            let _e85 = material.scatter_color;
-            let _e91 = material.scatter_scale;
-            let _e92 = weft_fabric_scatter(_e85.xyz, _e54.n_dot_l, _e54.n_dot_v, _e91);
-            color = ((direct + (ambient * diffuse_albedo)) + _e92);
-        }
+        let _e72 = weft_v_schlick_ggx(_e54.n_dot_v, _e54.n_dot_l, roughness_2);
+        let _e73 = weft_f_schlick(f0_1, l_dot_h);
+        let _e75 = weft_fabric_d(_e54.n_dot_h);
+        let specular = ((_e75 * _e72) * _e73);
+        let _e78 = weft_diffuse_lambert(diffuse_albedo);
+        let direct = (((_e78 + specular) * _e65) * _e54.n_dot_l);
+        let _e85 = material.scatter_color;
+        let _e91 = material.scatter_scale;
+        let _e92 = weft_fabric_scatter(_e85.xyz, _e54.n_dot_l, _e54.n_dot_v, _e91);
+        color = ((direct + (ambient * diffuse_albedo)) + _e92);
     }
     let _e96 = color;
     let radiance = clamp(_e96, vec3(0f), vec3(65504f));

@@ -112,7 +112,7 @@ fn weft_v_charlie(n_dot_v: f32, n_dot_l: f32, sheen_roughness: f32) -> f32 {
     let r = weft_sheen_clamp_roughness(sheen_roughness);
     let nv = weft_clamp_cos(n_dot_v);
     let nl = weft_clamp_cos(n_dot_l);
-    let g_inv = 1.0 + weft_sheen_lambda(nv, r) + weft_sheen_lambda(nl, r);
+    let g_inv = 1.0 + weft_sheen_lambda_one_exp(nv, r) + weft_sheen_lambda_one_exp(nl, r);
     return 1.0 / (g_inv * 4.0 * nv * nl);
 }
 

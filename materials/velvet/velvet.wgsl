@@ -1,6 +1,5 @@
 // @include "lib/forward.wgsl"
 // @include "lib/sheen_lighting.wgsl"
-// @include "lib/half.wgsl"
 //
 // velvet: fabric PBR (seed 003, the PBR extension of a Unity shell-fur
 // article; the same lighting is meant for shell fur). Returns linear HDR
@@ -29,14 +28,8 @@
 //               0.4 (1 - n.v), scale) x scatter colour x (n.l 0.5 + 0.5),
 //               added unlit as the seed does; SH ambient diffuse; no
 //               indirect specular (seed).
-//   low       = an approximation of the reference in half precision: the
-//               fast tier's model with the Charlie D (its power
-//               sin^(1/r) in f32), G2 / (4 n.v), the sheen colour and the
-//               albedo scaling in weft_half (f16 with shader-f16, the f32 fallback
-//               otherwise); the Lambdas in f32 (they reach ~8e8) with one
-//               exp each instead of two (weft_sheen_lambda_one_exp: the
-//               same value), and one albedo fetch, E(n.v), for direct
-//               and ambient (velvet_low below; README).
+// No `low` tier since 2026-11-29: its half precision gained nothing on a
+// GPU compiler (README, "Tiers").
 
 @fragment
 fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
@@ -72,9 +65,7 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
     let ambient = weft_sh_irradiance(n) * ao;
 
     var color: vec3<f32>;
-    if WEFT_TIER == TIER_LOW {
-        color = velvet_low(n, v, lit, f0, diffuse_albedo, roughness, ao, light, ambient);
-    } else if WEFT_TIER == TIER_SEED {
+    if WEFT_TIER == TIER_SEED {
         // -------------------------------------------------------- seed (look)
         // BRDF1 with GGXTerm -> FabricD. In weft's units (Lambert with 1/pi)
         // Unity's specularTerm = V D pi becomes D V; FabricD is used as the
@@ -123,45 +114,4 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
     // Never negative, at most the fp16 maximum (Rgba16Float targets).
     let radiance = clamp(color, vec3<f32>(0.0), vec3<f32>(WEFT_MAX_HALF));
     return vec4<f32>(radiance, alpha);
-}
-
-// ---------------------------------------------------------------- low
-// The fast tier's model (Charlie sheen, view-only albedo scaling) with its
-// dimensionless terms in half precision (weft_half: f16 where the device has
-// shader-f16, else the f32 fallback). Light, SH, the prefiltered environment,
-// the Lambdas and sin^(1/r) stay f32. Every half intermediate is bounded:
-// sin^(1/r) in [0, 1], 2 + 1/r <= 16.3, D <= 2.6, G2 in [0, 1], G2 / (4 n.v)
-// <= 250 (n.v floored at 1e-3), D V n.l <= 650.
-fn velvet_low(
-    n: vec3<f32>, v: vec3<f32>, lit: WeftLightGeometry,
-    f0: vec3<f32>, diffuse_albedo: vec3<f32>, roughness: f32, ao: f32,
-    light: vec3<f32>, ambient: vec3<f32>,
-) -> vec3<f32> {
-    let sheen_r = weft_sheen_clamp_roughness(roughness);
-    let n_dot_v = lit.n_dot_v;
-    let n_dot_l = lit.n_dot_l;
-    let sheen_color = vec3<weft_half>(saturate(f0 + max(material.scatter_color.rgb, vec3<f32>(0.0))));
-    // One albedo fetch, filtered as fast's, for direct and ambient (the
-    // nearest texel computed in ALU cost more on AMD's compiler: README).
-    let e_v = weft_half(weft_sheen_albedo(n_dot_v, sheen_r));
-    let scaling = saturate(weft_half(1.0) - max(sheen_color.x, max(sheen_color.y, sheen_color.z)) * e_v);
-    // Charlie D = (2 + 1/r) sin^(1/r) / (2 pi), sin^2 = (1 - n.h)(1 + n.h).
-    // The power is taken in f32 and its result in [0, 1] is half: near the
-    // peak sin^2 (~1e-7 where n.h rounds to 0.99999994) is below f16's
-    // normal range, and sin^(1/r) of it (3.5e-4 at r = 1) would be lost,
-    // visibly under a bright light (`weft stability`).
-    let inv_r = 1.0 / sheen_r;
-    let noh = lit.n_dot_h;
-    let sin_pow = weft_half(pow(max((1.0 - noh) * (1.0 + noh), 0.0), 0.5 * inv_r));
-    let d = weft_half(2.0 + inv_r) * sin_pow * weft_half(0.5 * WEFT_INV_PI);
-    // V n.l = G2 / (4 n.v) (n.l cancels; 0 below the horizon): G2 from the
-    // f32 Lambdas, 1 / (1 + Lambda_v + Lambda_l) in [0, 1].
-    let g2 = weft_half(1.0 / (1.0 + weft_sheen_lambda_one_exp(n_dot_v, sheen_r) + weft_sheen_lambda_one_exp(n_dot_l, sheen_r)));
-    let nv = max(weft_half(n_dot_v), weft_half(WEFT_MIN_N_DOT_HALF));
-    let v_n_dot_l = select(weft_half(0.0), g2 / (weft_half(4.0) * nv), n_dot_l > 0.0);
-    let sheen = vec3<f32>(sheen_color * (d * v_n_dot_l));
-    let base_direct = diffuse_albedo * f32(scaling * weft_half(n_dot_l) * weft_half(WEFT_INV_PI));
-    let direct = (sheen + base_direct) * light;
-    let env_sheen = weft_prefiltered_radiance(reflect(-v, n), sheen_r) * vec3<f32>(sheen_color * e_v) * ao;
-    return direct + ambient * diffuse_albedo * f32(scaling) + env_sheen;
 }
