@@ -2,8 +2,7 @@
 
 use std::path::{Path, PathBuf};
 use weft_meta::MaterialMetadata;
-use weft_meta::files::{MAX_TEXT_BYTES, read_regular};
-use weft_meta::gpu_model::ModelSummary;
+use weft_meta::gpu_model::{ModelSummary, generated_inputs_hash};
 
 pub(crate) const BENCH_EXAMPLES: &str = "Examples:
   weft bench
@@ -157,13 +156,7 @@ fn print_gpu_model(m: &MaterialMetadata, meta_path: &Path) {
         return;
     }
     // The model costed the generated files: flag a material changed since.
-    let costed = generated
-        .join(&m.name)
-        .join(format!("{}.meta.json", m.name));
-    let costed_hash = read_regular(&costed, MAX_TEXT_BYTES)
-        .ok()
-        .and_then(|b| serde_json::from_slice::<serde_json::Value>(&b).ok())
-        .and_then(|v| v.get("inputs_hash")?.as_str().map(str::to_string));
+    let costed_hash = generated_inputs_hash(generated, &m.name);
     let stale = if costed_hash.as_deref() == Some(m.inputs_hash.as_str()) {
         ""
     } else {

@@ -7,6 +7,7 @@ use crate::model::{self, StageModel};
 use crate::record::PipelineStats;
 use crate::trips;
 use std::path::Path;
+use weft_meta::gpu_model::generated_inputs_hash;
 
 /// A tier's figures: summed over the variant's passes (f32 files).
 #[derive(Clone, Debug, PartialEq)]
@@ -142,7 +143,8 @@ impl GpuTimings {
             .tiers
             .iter()
             .find(|t| t.material == material && t.tier == tier)?;
-        (t.inputs_hash.as_deref()? == current_inputs_hash(generated, material)?).then_some(t.ratio)
+        (t.inputs_hash.as_deref()? == generated_inputs_hash(generated, material)?)
+            .then_some(t.ratio)
     }
 
     /// The run's own ρ against `family`'s model (of the library it timed).
@@ -152,15 +154,6 @@ impl GpuTimings {
             .find(|(f, _)| f == family)
             .and_then(|r| r.1)
     }
-}
-
-/// The `inputs_hash` of `material`'s committed metadata.
-fn current_inputs_hash(generated: &Path, material: &str) -> Option<String> {
-    let path = generated
-        .join(material)
-        .join(format!("{material}.meta.json"));
-    let json: serde_json::Value = serde_json::from_slice(&std::fs::read(path).ok()?).ok()?;
-    Some(json.get("inputs_hash")?.as_str()?.to_string())
 }
 
 /// Every committed real-GPU report under `generated/reports/` (`gpu-*.json`

@@ -153,3 +153,16 @@ impl FamilySummary {
             .find(|t| t.material == material && t.tier == tier)
     }
 }
+
+/// The `inputs_hash` of `<generated>/<material>/<material>.meta.json`: which
+/// version of the material the committed reports beside it (the model, a
+/// GPU bench) describe, for telling figures of an earlier version apart.
+/// None when the file is absent or unreadable (regular files only, bounded).
+pub fn generated_inputs_hash(generated: &Path, material: &str) -> Option<String> {
+    let path = generated
+        .join(material)
+        .join(format!("{material}.meta.json"));
+    let bytes = crate::files::read_regular(&path, crate::files::MAX_TEXT_BYTES).ok()?;
+    let json: serde_json::Value = serde_json::from_slice(&bytes).ok()?;
+    Some(json.get("inputs_hash")?.as_str()?.to_string())
+}

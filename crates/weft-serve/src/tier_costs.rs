@@ -9,7 +9,7 @@
 use serde_json::{Value, json};
 use std::path::Path;
 use weft_meta::files::{MAX_TEXT_BYTES, read_regular};
-use weft_meta::gpu_model::ModelSummary;
+use weft_meta::gpu_model::{ModelSummary, generated_inputs_hash};
 use weft_meta::{MaterialMetadata, Measurements};
 
 /// The reports a build's snapshot attaches, read once per build.
@@ -82,15 +82,7 @@ impl TierCosts {
         if families.is_empty() {
             return None;
         }
-        let costed = self
-            .reports
-            .join("..")
-            .join(material)
-            .join(format!("{material}.meta.json"));
-        let inputs_hash = read_regular(&costed, MAX_TEXT_BYTES)
-            .ok()
-            .and_then(|b| serde_json::from_slice::<Value>(&b).ok())
-            .and_then(|v| v.get("inputs_hash")?.as_str().map(str::to_string));
+        let inputs_hash = generated_inputs_hash(&self.reports.join(".."), material);
         Some(json!({ "inputs_hash": inputs_hash, "families": families }))
     }
 }
