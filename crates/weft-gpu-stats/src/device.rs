@@ -82,7 +82,7 @@ impl NullDevice {
         let (pd, name, driver_info) = found.ok_or_else(|| {
             Error::Unsupported(
                 "the Vulkan loader found no RADV device: is VK_ICD_FILENAMES set to RADV's \
-                 manifest and RADV_FORCE_FAMILY to a family this Mesa knows (navi21, gfx1100)?"
+                 manifest and RADV_FORCE_FAMILY to a family this Mesa knows (navi21; gfx1100 or navi31)?"
                     .into(),
             )
         })?;

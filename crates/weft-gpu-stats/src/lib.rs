@@ -10,6 +10,7 @@
 mod compile;
 mod device;
 pub mod error;
+pub mod family;
 pub mod funnel;
 pub mod icd;
 pub mod isa;
@@ -34,7 +35,8 @@ pub use worker::WorkerCommand;
 
 use std::path::PathBuf;
 
-/// RDNA2 (Radeon RX 6800/6900) and RDNA3 (RX 7900; this Mesa calls it `gfx1100`).
+/// RDNA2 (Radeon RX 6800/6900) and RDNA3 (RX 7900: Mesa 22.3 calls it `gfx1100`, later
+/// releases `navi31`; weft keeps the first name, [`family`]).
 pub const DEFAULT_FAMILIES: [&str; 2] = ["navi21", "gfx1100"];
 
 /// What to compile, for which families, with which driver.
@@ -44,7 +46,7 @@ pub struct Options {
     pub generated: PathBuf,
     /// Which pipelines.
     pub selection: Selection,
-    /// `RADV_FORCE_FAMILY` values, in output order.
+    /// Families (`RADV_FORCE_FAMILY` names; `navi31` is reported as `gfx1100`), in output order.
     pub families: Vec<String>,
     /// Capture each executable's ISA disassembly.
     pub disassembly: bool,
@@ -74,7 +76,7 @@ pub fn collect(options: &Options) -> Result<Vec<FamilyStats>> {
         .iter()
         .map(|family| {
             let request = worker::Request {
-                family: family.clone(),
+                family: family::weft_name(family).to_string(),
                 generated: options.generated.clone(),
                 selection: options.selection.clone(),
                 disassembly: options.disassembly,

@@ -92,7 +92,7 @@ impl StageStats {
 /// A pipeline's figures on one family.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct PipelineStats {
-    /// The `RADV_FORCE_FAMILY` value (`navi21`, `gfx1100`, …).
+    /// weft's name of the family (`navi21`, `gfx1100`, …: [`crate::family`]).
     pub family: String,
     /// The shader.
     pub source: PipelineSource,
@@ -114,7 +114,7 @@ impl PipelineStats {
 /// Every pipeline's figures on one family, with the driver that produced them.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct FamilyStats {
-    /// The `RADV_FORCE_FAMILY` value.
+    /// weft's name of the family, whichever `RADV_FORCE_FAMILY` spelling this Mesa took.
     pub family: String,
     /// The Vulkan device name the driver reports.
     pub device_name: String,

@@ -24,7 +24,8 @@ pub struct ModelSummary {
 /// One family's figures.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct FamilySummary {
-    /// The `RADV_FORCE_FAMILY` value.
+    /// weft's name of the family (`navi21`, `gfx1100`; RADV's `RADV_FORCE_FAMILY` value, or
+    /// what older Mesa called it).
     pub family: String,
     /// The Vulkan device name the driver reported.
     pub device_name: String,

@@ -150,7 +150,8 @@ fn parse_gpu_family(scene: &Table, cx: &mut Cx) -> String {
         scene.span_of("gpu_family"),
         "not a modelled family",
         format!(
-            "`tier = \"auto\"` costs tiers with AMD's compiler for one of: {} (default `{DEFAULT_GPU_COST_FAMILY}`)",
+            "`tier = \"auto\"` costs tiers with AMD's compiler for one of: {} (default \
+             `{DEFAULT_GPU_COST_FAMILY}`; RDNA3 is `gfx1100`, which Mesa after 22.3 calls `navi31`)",
             GPU_COST_FAMILIES.join(", ")
         ),
     );
