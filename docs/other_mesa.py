@@ -14,7 +14,8 @@ makes weft use it, e.g.
         cargo xtask bench gpu-model
 
 (weft-gpu-stats looks for RADV's manifest in $XDG_CONFIG_HOME/vulkan/icd.d
-first, as the Vulkan loader does). Needs curl, xz and dpkg-deb.
+first, as the Vulkan loader does), and VK_ICD_FILENAMES for its lavapipe,
+to render with it too. Needs curl and dpkg-deb.
 """
 import argparse
 import json
@@ -60,15 +61,24 @@ def main():
             subprocess.run(["curl", "-sSf", "-o", deb, f"{MIRROR}/{filename}"], check=True)
         subprocess.run(["dpkg-deb", "-x", deb, root], check=True)
         print(f"{name} {version}")
-    driver = os.path.join(root, LIBDIR, "libvulkan_radeon.so")
-    with open(os.path.join(root, "usr/share/vulkan/icd.d/radeon_icd.json")) as f:
-        manifest = json.load(f)
-    manifest["ICD"]["library_path"] = driver
     icd_dir = os.path.join(out, "icd", "vulkan", "icd.d")
     os.makedirs(icd_dir, exist_ok=True)
-    with open(os.path.join(icd_dir, "radeon_icd.x86_64.json"), "w") as f:
-        json.dump(manifest, f, indent=2)
+    # RADV where weft-gpu-stats looks first; lavapipe apart, so that the
+    # loader does not list it beside the system's own.
+    manifest(root, "radeon", os.path.join(icd_dir, "radeon_icd.x86_64.json"))
+    lavapipe = os.path.join(out, "lvp_icd.x86_64.json")
+    manifest(root, "lvp", lavapipe)
     print(f"XDG_CONFIG_HOME={out}/icd LD_LIBRARY_PATH={root}/{LIBDIR}")
+    print(f"rendering on its lavapipe as well: VK_ICD_FILENAMES={lavapipe}")
+
+
+def manifest(root, driver, path):
+    """The package's ICD manifest for `driver`, its library by absolute path."""
+    with open(os.path.join(root, f"usr/share/vulkan/icd.d/{driver}_icd.json")) as f:
+        data = json.load(f)
+    data["ICD"]["library_path"] = os.path.join(root, LIBDIR, f"libvulkan_{driver}.so")
+    with open(path, "w") as f:
+        json.dump(data, f, indent=2)
 
 
 if __name__ == "__main__":

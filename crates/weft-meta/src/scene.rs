@@ -351,7 +351,8 @@ pub struct SceneFunnel {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct FunnelModel {
-    /// The `RADV_FORCE_FAMILY` value (`navi21`: RDNA2, `gfx1100`: RDNA3).
+    /// weft's name of the family (`navi21`: RDNA2, `gfx1100`: RDNA3, which
+    /// Mesa after 22.3 calls `navi31`).
     pub family: String,
     /// The compiler that produced the figures (RADV's driver string, e.g.
     /// `Mesa 22.3.6`): figures move with it.
