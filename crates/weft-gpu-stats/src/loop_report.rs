@@ -6,6 +6,7 @@
 use crate::model::{self, StageModel};
 use crate::record::PipelineStats;
 use crate::trips;
+use std::collections::BTreeMap;
 use std::path::Path;
 use weft_meta::gpu_model::generated_inputs_hash;
 
@@ -134,17 +135,23 @@ pub struct GpuTier {
 }
 
 impl GpuTimings {
-    /// The ratio of `material` `tier`, if it was timed on the material's
-    /// current files: the report recorded the `inputs_hash` the material's
-    /// metadata has now (`generated/<material>/<material>.meta.json`). A
-    /// timing of an earlier version of a tier does not rank today's.
-    pub fn current_ratio(&self, generated: &Path, material: &str, tier: &str) -> Option<TierRatio> {
-        let t = self
-            .tiers
+    /// The ratios of the tiers timed on their material's current files, by
+    /// (material, tier): the report recorded the `inputs_hash` the material's
+    /// metadata has now (`generated/<material>/<material>.meta.json`, read
+    /// once per material). A timing of an earlier version of a tier does not
+    /// rank today's.
+    pub fn current_ratios(&self, generated: &Path) -> BTreeMap<(String, String), TierRatio> {
+        let mut hashes: BTreeMap<&str, Option<String>> = BTreeMap::new();
+        self.tiers
             .iter()
-            .find(|t| t.material == material && t.tier == tier)?;
-        (t.inputs_hash.as_deref()? == generated_inputs_hash(generated, material)?)
-            .then_some(t.ratio)
+            .filter(|t| {
+                let now = hashes
+                    .entry(&t.material)
+                    .or_insert_with(|| generated_inputs_hash(generated, &t.material));
+                t.inputs_hash.is_some() && t.inputs_hash == *now
+            })
+            .map(|t| ((t.material.clone(), t.tier.clone()), t.ratio))
+            .collect()
     }
 
     /// The run's own ρ against `family`'s model (of the library it timed).
@@ -328,13 +335,11 @@ mod tests {
         )
         .unwrap();
         let g = parse_gpu_timings("gpu-gpu.json".into(), &json).unwrap();
-        let a = g.current_ratio(&root, "a", "fast");
-        let b = g.current_ratio(&root, "b", "fast");
-        let c = g.current_ratio(&root, "c", "fast");
-        let missing = g.current_ratio(&root, "a", "reference");
+        let current = g.current_ratios(&root);
         std::fs::remove_dir_all(&root).unwrap();
-        assert_eq!(a.map(|r| r.f32_files()), Some(2.0));
-        assert_eq!((b, c, missing), (None, None, None));
+        let key = |m: &str| (m.to_string(), "fast".to_string());
+        assert_eq!(current.get(&key("a")).map(|r| r.f32_files()), Some(2.0));
+        assert_eq!(current.len(), 1, "{current:?}");
         assert_eq!(g.recorded_rho("navi21"), Some(0.9));
         assert_eq!(g.recorded_rho("gfx1100"), None);
     }

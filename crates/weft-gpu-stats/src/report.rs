@@ -363,18 +363,15 @@ fn loop_table(o: &mut String, generated: &Path, f: &FamilyStats, rows: &[TierRow
         .iter()
         .map(|g| {
             // Only timings of today's files rank today's costs.
+            let current = g.current_ratios(generated);
             let timed: Vec<(&CostedRow, f64)> = costed
                 .iter()
                 .filter_map(|c| {
-                    let r = g.current_ratio(generated, &c.model.material, &c.model.tier)?;
-                    Some((c, (c.files)(&r)?))
+                    let key = (c.model.material.clone(), c.model.tier.clone());
+                    Some((c, (c.files)(current.get(&key)?)?))
                 })
                 .collect();
-            let earlier = g
-                .tiers
-                .iter()
-                .filter(|t| g.current_ratio(generated, &t.material, &t.tier).is_none())
-                .count();
+            let earlier = g.tiers.len() - current.len();
             let pairs: Vec<(f64, f64)> = timed
                 .iter()
                 .map(|(c, gpu)| (c.model.executed_cost / base.executed_cost, *gpu))
