@@ -548,28 +548,29 @@ float hair_value_noise(
 
 float hair_jitter(
     metal::float2 uv0_1,
-    metal::float4 per_vertex,
+    metal::float2 rotation,
+    float noise_period,
     constant WeftMaterial& material,
     metal::sampler material_sampler,
     metal::texture2d<float, metal::access::sample> jitter_map,
     metal::texture2d<float, metal::access::sample> uv_rotate_mask
 ) {
-    metal::float4 _e4 = uv_rotate_mask.sample(material_sampler, uv0_1);
-    float mask = metal::step(0.8, _e4.x);
-    float c_2 = per_vertex.x;
-    float s_4 = per_vertex.y;
+    metal::float4 _e5 = uv_rotate_mask.sample(material_sampler, uv0_1);
+    float mask = metal::step(0.8, _e5.x);
+    float c_2 = rotation.x;
+    float s_4 = rotation.y;
     metal::float2 rotated = metal::float2((c_2 * uv0_1.x) + (s_4 * uv0_1.y), (-(s_4) * uv0_1.x) + (c_2 * uv0_1.y));
-    metal::float4 _e27 = material.jitter_map_st;
-    metal::float2 _e28 = weft_transform_uv((mask > 0.5) ? rotated : uv0_1, _e27);
-    metal::float4 _e31 = jitter_map.sample(material_sampler, _e28);
-    float j = _e31.x;
-    uint _e37 = material.strand_along_tangent;
-    float across = (_e37 != 0u) ? _e28.y : _e28.x;
-    float _e43 = material.jitter_strength;
-    float _e47 = material.strand_noise;
-    float _e50 = material.strand_density;
-    float _e53 = hair_value_noise(across * _e50, per_vertex.w);
-    return (_e43 * j) + (_e47 * _e53);
+    metal::float4 _e28 = material.jitter_map_st;
+    metal::float2 _e29 = weft_transform_uv((mask > 0.5) ? rotated : uv0_1, _e28);
+    metal::float4 _e32 = jitter_map.sample(material_sampler, _e29);
+    float j = _e32.x;
+    uint _e38 = material.strand_along_tangent;
+    float across = (_e38 != 0u) ? _e29.y : _e29.x;
+    float _e44 = material.strand_density;
+    float _e46 = hair_value_noise(across * _e44, noise_period);
+    float _e49 = material.jitter_strength;
+    float _e53 = material.strand_noise;
+    return (_e49 * j) + (_e53 * _e46);
 }
 
 struct vs_fringe_shadowInput {
@@ -730,29 +731,29 @@ fragment fs_mainOutput fs_main(
     metal::float3 n_3 = _e19.n;
     metal::float3x3 _e23 = weft_tangent_frame(n_3, in_2.world_tangent);
     metal::float3 _e25 = hair_strand(_e23, in_2.uv0_, material);
-    float _e28 = hair_jitter(in_2.uv0_, in_2.jitter, material, material_sampler, jitter_map, uv_rotate_mask);
-    metal::float3 _e29 = weft_main_light_direction(weft_frame);
-    metal::float3 _e30 = weft_main_light_radiance(weft_frame);
-    metal::float3 _e31 = weft_sh_irradiance(n_3, weft_frame);
-    float n_dot_l = metal::dot(n_3, _e29);
+    float _e31 = hair_jitter(in_2.uv0_, in_2.jitter.xy, in_2.jitter.w, material, material_sampler, jitter_map, uv_rotate_mask);
+    metal::float3 _e32 = weft_main_light_direction(weft_frame);
+    metal::float3 _e33 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e34 = weft_sh_irradiance(n_3, weft_frame);
+    float n_dot_l = metal::dot(n_3, _e32);
     {
-        metal::float3 _e36 = weft_safe_normalize(_e25 + (_e28 * n_3), _e25);
-        metal::float3 _e39 = weft_hair_sigma_a_scaled(base, in_2.fibre.w);
-        WeftHair _e40 = hair_from_varyings(in_2, _e39);
-        WeftHairAngles _e41 = weft_hair_angles(_e36, v_2, _e29);
+        metal::float3 _e39 = weft_safe_normalize(_e25 + (_e31 * n_3), _e25);
+        metal::float3 _e42 = weft_hair_sigma_a_scaled(base, in_2.fibre.w);
+        WeftHair _e43 = hair_from_varyings(in_2, _e42);
+        WeftHairAngles _e44 = weft_hair_angles(_e39, v_2, _e32);
         {
-            WeftHairLobes _e43 = weft_hair_fast(_e40, _e36, v_2, _e29);
-            lobes = _e43;
+            WeftHairLobes _e46 = weft_hair_fast(_e43, _e39, v_2, _e32);
+            lobes = _e46;
         }
         float body = metal::smoothstep(-0.25, HAIR_TERMINATOR, n_dot_l);
-        metal::float3 _e50 = lobes.back;
-        metal::float3 multiple = base * (metal::float3(1.0) - _e50);
-        metal::float3 _e54 = lobes.s;
-        metal::float3 direct = (_e54 * body) + (multiple * (WEFT_INV_PI * metal::saturate(n_dot_l)));
-        metal::float3 _e63 = lobes.back;
-        color = (direct * _e30) + (_e31 * (multiple + _e63));
+        metal::float3 _e53 = lobes.back;
+        metal::float3 multiple = base * (metal::float3(1.0) - _e53);
+        metal::float3 _e57 = lobes.s;
+        metal::float3 direct = (_e57 * body) + (multiple * (WEFT_INV_PI * metal::saturate(n_dot_l)));
+        metal::float3 _e66 = lobes.back;
+        color = (direct * _e33) + (_e34 * (multiple + _e66));
     }
-    metal::float3 _e67 = color;
-    metal::float3 radiance = metal::clamp(_e67, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e70 = color;
+    metal::float3 radiance = metal::clamp(_e70, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

@@ -597,24 +597,24 @@ float hair_value_noise(float x_5, float p)
     return (lerp(_e16, _e18, ((f_1 * f_1) * (3.0 - (2.0 * f_1)))) - 0.5);
 }
 
-float hair_jitter(float2 uv0_1, float4 per_vertex)
+float hair_jitter(float2 uv0_1, float2 rotation, float noise_period)
 {
-    float4 _e4 = uv_rotate_mask.Sample(material_sampler, uv0_1);
-    float mask = step(0.8, _e4.x);
-    float c_2 = per_vertex.x;
-    float s_4 = per_vertex.y;
+    float4 _e5 = uv_rotate_mask.Sample(material_sampler, uv0_1);
+    float mask = step(0.8, _e5.x);
+    float c_2 = rotation.x;
+    float s_4 = rotation.y;
     float2 rotated = float2(((c_2 * uv0_1.x) + (s_4 * uv0_1.y)), ((-(s_4) * uv0_1.x) + (c_2 * uv0_1.y)));
-    float4 _e27 = material.jitter_map_st;
-    const float2 _e28 = weft_transform_uv(((mask > 0.5) ? rotated : uv0_1), _e27);
-    float4 _e31 = jitter_map.Sample(material_sampler, _e28);
-    float j = _e31.x;
-    uint _e37 = material.strand_along_tangent;
-    float across = ((_e37 != 0u) ? _e28.y : _e28.x);
-    float _e43 = material.jitter_strength;
-    float _e47 = material.strand_noise;
-    float _e50 = material.strand_density;
-    const float _e53 = hair_value_noise((across * _e50), per_vertex.w);
-    return ((_e43 * j) + (_e47 * _e53));
+    float4 _e28 = material.jitter_map_st;
+    const float2 _e29 = weft_transform_uv(((mask > 0.5) ? rotated : uv0_1), _e28);
+    float4 _e32 = jitter_map.Sample(material_sampler, _e29);
+    float j = _e32.x;
+    uint _e38 = material.strand_along_tangent;
+    float across = ((_e38 != 0u) ? _e29.y : _e29.x);
+    float _e44 = material.strand_density;
+    const float _e46 = hair_value_noise((across * _e44), noise_period);
+    float _e49 = material.jitter_strength;
+    float _e53 = material.strand_noise;
+    return ((_e49 * j) + (_e53 * _e46));
 }
 
 VertexOutput_vs_outline vs_outline(WeftOutlineVertex in_)
@@ -780,29 +780,29 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 n_3 = _e19.n;
     const float3x3 _e23 = weft_tangent_frame(n_3, in_3.world_tangent);
     const float3 _e25 = hair_strand(_e23, in_3.uv0_);
-    const float _e28 = hair_jitter(in_3.uv0_, in_3.jitter);
-    const float3 _e29 = weft_main_light_direction();
-    const float3 _e30 = weft_main_light_radiance();
-    const float3 _e31 = weft_sh_irradiance(n_3);
-    float n_dot_l = dot(n_3, _e29);
+    const float _e31 = hair_jitter(in_3.uv0_, in_3.jitter.xy, in_3.jitter.w);
+    const float3 _e32 = weft_main_light_direction();
+    const float3 _e33 = weft_main_light_radiance();
+    const float3 _e34 = weft_sh_irradiance(n_3);
+    float n_dot_l = dot(n_3, _e32);
     {
-        const float3 _e36 = weft_safe_normalize((_e25 + (_e28 * n_3)), _e25);
-        const float3 _e39 = weft_hair_sigma_a_scaled(base, in_3.fibre.w);
-        const WeftHair _e40 = hair_from_varyings(in_3, _e39);
-        const WeftHairAngles _e41 = weft_hair_angles(_e36, v_2, _e29);
+        const float3 _e39 = weft_safe_normalize((_e25 + (_e31 * n_3)), _e25);
+        const float3 _e42 = weft_hair_sigma_a_scaled(base, in_3.fibre.w);
+        const WeftHair _e43 = hair_from_varyings(in_3, _e42);
+        const WeftHairAngles _e44 = weft_hair_angles(_e39, v_2, _e32);
         {
-            const WeftHairLobes _e43 = weft_hair_fast(_e40, _e36, v_2, _e29);
-            lobes = _e43;
+            const WeftHairLobes _e46 = weft_hair_fast(_e43, _e39, v_2, _e32);
+            lobes = _e46;
         }
         float body = smoothstep(-0.25, HAIR_TERMINATOR, n_dot_l);
-        float3 _e50 = lobes.back;
-        float3 multiple = (base * ((1.0).xxx - _e50));
-        float3 _e54 = lobes.s;
-        float3 direct = ((_e54 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
-        float3 _e63 = lobes.back;
-        color = ((direct * _e30) + (_e31 * (multiple + _e63)));
+        float3 _e53 = lobes.back;
+        float3 multiple = (base * ((1.0).xxx - _e53));
+        float3 _e57 = lobes.s;
+        float3 direct = ((_e57 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
+        float3 _e66 = lobes.back;
+        color = ((direct * _e33) + (_e34 * (multiple + _e66)));
     }
-    float3 _e67 = color;
-    float3 radiance = clamp(_e67, (0.0).xxx, (65504.0).xxx);
+    float3 _e70 = color;
+    float3 radiance = clamp(_e70, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

@@ -448,23 +448,23 @@ float hair_value_noise(float x_5, float p) {
     return (mix(_e16, _e18, ((f_2 * f_2) * (3.0 - (2.0 * f_2)))) - 0.5);
 }
 
-float hair_jitter(vec2 uv0_1, vec4 per_vertex) {
-    vec4 _e4 = texture(_group_1_binding_6_fs, vec2(uv0_1));
-    float mask = step(0.8, _e4.x);
-    float c_2 = per_vertex.x;
-    float s_4 = per_vertex.y;
+float hair_jitter(vec2 uv0_1, vec2 rotation, float noise_period) {
+    vec4 _e5 = texture(_group_1_binding_6_fs, vec2(uv0_1));
+    float mask = step(0.8, _e5.x);
+    float c_2 = rotation.x;
+    float s_4 = rotation.y;
     vec2 rotated = vec2(((c_2 * uv0_1.x) + (s_4 * uv0_1.y)), ((-(s_4) * uv0_1.x) + (c_2 * uv0_1.y)));
-    vec4 _e27 = _group_1_binding_0_fs.jitter_map_st;
-    vec2 _e28 = weft_transform_uv(((mask > 0.5) ? rotated : uv0_1), _e27);
-    vec4 _e31 = texture(_group_1_binding_5_fs, vec2(_e28));
-    float j = _e31.x;
-    uint _e37 = _group_1_binding_0_fs.strand_along_tangent;
-    float across = ((_e37 != 0u) ? _e28.y : _e28.x);
-    float _e43 = _group_1_binding_0_fs.jitter_strength;
-    float _e47 = _group_1_binding_0_fs.strand_noise;
-    float _e50 = _group_1_binding_0_fs.strand_density;
-    float _e53 = hair_value_noise((across * _e50), per_vertex.w);
-    return ((_e43 * j) + (_e47 * _e53));
+    vec4 _e28 = _group_1_binding_0_fs.jitter_map_st;
+    vec2 _e29 = weft_transform_uv(((mask > 0.5) ? rotated : uv0_1), _e28);
+    vec4 _e32 = texture(_group_1_binding_5_fs, vec2(_e29));
+    float j = _e32.x;
+    uint _e38 = _group_1_binding_0_fs.strand_along_tangent;
+    float across = ((_e38 != 0u) ? _e29.y : _e29.x);
+    float _e44 = _group_1_binding_0_fs.strand_density;
+    float _e46 = hair_value_noise((across * _e44), noise_period);
+    float _e49 = _group_1_binding_0_fs.jitter_strength;
+    float _e53 = _group_1_binding_0_fs.strand_noise;
+    return ((_e49 * j) + (_e53 * _e46));
 }
 
 void main() {
@@ -483,30 +483,30 @@ void main() {
     vec3 n_3 = _e19.n;
     mat3x3 _e23 = weft_tangent_frame(n_3, in_3.world_tangent);
     vec3 _e25 = hair_strand(_e23, in_3.uv0_);
-    float _e28 = hair_jitter(in_3.uv0_, in_3.jitter);
-    vec3 _e29 = weft_main_light_direction();
-    vec3 _e30 = weft_main_light_radiance();
-    vec3 _e31 = weft_sh_irradiance(n_3);
-    float n_dot_l = dot(n_3, _e29);
+    float _e31 = hair_jitter(in_3.uv0_, in_3.jitter.xy, in_3.jitter.w);
+    vec3 _e32 = weft_main_light_direction();
+    vec3 _e33 = weft_main_light_radiance();
+    vec3 _e34 = weft_sh_irradiance(n_3);
+    float n_dot_l = dot(n_3, _e32);
     {
-        vec3 _e36 = weft_safe_normalize((_e25 + (_e28 * n_3)), _e25);
-        vec3 _e39 = weft_hair_sigma_a_scaled(base, in_3.fibre.w);
-        WeftHair _e40 = hair_from_varyings(in_3, _e39);
-        WeftHairAngles _e41 = weft_hair_angles(_e36, v_2, _e29);
+        vec3 _e39 = weft_safe_normalize((_e25 + (_e31 * n_3)), _e25);
+        vec3 _e42 = weft_hair_sigma_a_scaled(base, in_3.fibre.w);
+        WeftHair _e43 = hair_from_varyings(in_3, _e42);
+        WeftHairAngles _e44 = weft_hair_angles(_e39, v_2, _e32);
         {
-            WeftHairLobes _e43 = weft_hair_fast(_e40, _e36, v_2, _e29);
-            lobes = _e43;
+            WeftHairLobes _e46 = weft_hair_fast(_e43, _e39, v_2, _e32);
+            lobes = _e46;
         }
         float body = smoothstep(-0.25, HAIR_TERMINATOR, n_dot_l);
-        vec3 _e50 = lobes.back;
-        vec3 multiple = (base * (vec3(1.0) - _e50));
-        vec3 _e54 = lobes.s;
-        vec3 direct = ((_e54 * body) + (multiple * (WEFT_INV_PI * clamp(n_dot_l, 0.0, 1.0))));
-        vec3 _e63 = lobes.back;
-        color = ((direct * _e30) + (_e31 * (multiple + _e63)));
+        vec3 _e53 = lobes.back;
+        vec3 multiple = (base * (vec3(1.0) - _e53));
+        vec3 _e57 = lobes.s;
+        vec3 direct = ((_e57 * body) + (multiple * (WEFT_INV_PI * clamp(n_dot_l, 0.0, 1.0))));
+        vec3 _e66 = lobes.back;
+        color = ((direct * _e33) + (_e34 * (multiple + _e66)));
     }
-    vec3 _e67 = color;
-    vec3 radiance = clamp(_e67, vec3(0.0), vec3(65504.0));
+    vec3 _e70 = color;
+    vec3 radiance = clamp(_e70, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

@@ -480,23 +480,23 @@ fn hair_value_noise(x_5: f32, p: f32) -> f32 {
     return (mix(_e16, _e18, ((f_2 * f_2) * (3f - (2f * f_2)))) - 0.5f);
 }
 
-fn hair_jitter(uv0_1: vec2<f32>, per_vertex: vec4<f32>) -> f32 {
-    let _e4 = textureSample(uv_rotate_mask, material_sampler, uv0_1);
-    let mask = step(0.8f, _e4.x);
-    let c_2 = per_vertex.x;
-    let s_4 = per_vertex.y;
+fn hair_jitter(uv0_1: vec2<f32>, rotation: vec2<f32>, noise_period: f32) -> f32 {
+    let _e5 = textureSample(uv_rotate_mask, material_sampler, uv0_1);
+    let mask = step(0.8f, _e5.x);
+    let c_2 = rotation.x;
+    let s_4 = rotation.y;
     let rotated = vec2<f32>(((c_2 * uv0_1.x) + (s_4 * uv0_1.y)), ((-(s_4) * uv0_1.x) + (c_2 * uv0_1.y)));
-    let _e27 = material.jitter_map_st;
-    let _e28 = weft_transform_uv(select(uv0_1, rotated, (mask > 0.5f)), _e27);
-    let _e31 = textureSample(jitter_map, material_sampler, _e28);
-    let j = _e31.x;
-    let _e37 = material.strand_along_tangent;
-    let across = select(_e28.x, _e28.y, (_e37 != 0u));
-    let _e43 = material.jitter_strength;
-    let _e47 = material.strand_noise;
-    let _e50 = material.strand_density;
-    let _e53 = hair_value_noise((across * _e50), per_vertex.w);
-    return ((_e43 * j) + (_e47 * _e53));
+    let _e28 = material.jitter_map_st;
+    let _e29 = weft_transform_uv(select(uv0_1, rotated, (mask > 0.5f)), _e28);
+    let _e32 = textureSample(jitter_map, material_sampler, _e29);
+    let j = _e32.x;
+    let _e38 = material.strand_along_tangent;
+    let across = select(_e29.x, _e29.y, (_e38 != 0u));
+    let _e44 = material.strand_density;
+    let _e46 = hair_value_noise((across * _e44), noise_period);
+    let _e49 = material.jitter_strength;
+    let _e53 = material.strand_noise;
+    return ((_e49 * j) + (_e53 * _e46));
 }
 
 @vertex 
@@ -638,29 +638,29 @@ fn fs_main(in_3: HairVaryings) -> @location(0) vec4<f32> {
     let n_3 = _e19.n;
     let _e23 = weft_tangent_frame(n_3, in_3.world_tangent);
     let _e25 = hair_strand(_e23, in_3.uv0_);
-    let _e28 = hair_jitter(in_3.uv0_, in_3.jitter);
-    let _e29 = weft_main_light_direction();
-    let _e30 = weft_main_light_radiance();
-    let _e31 = weft_sh_irradiance(n_3);
-    let n_dot_l = dot(n_3, _e29);
+    let _e31 = hair_jitter(in_3.uv0_, in_3.jitter.xy, in_3.jitter.w);
+    let _e32 = weft_main_light_direction();
+    let _e33 = weft_main_light_radiance();
+    let _e34 = weft_sh_irradiance(n_3);
+    let n_dot_l = dot(n_3, _e32);
     {
-        let _e36 = weft_safe_normalize((_e25 + (_e28 * n_3)), _e25);
-        let _e39 = weft_hair_sigma_a_scaled(base, in_3.fibre.w);
-        let _e40 = hair_from_varyings(in_3, _e39);
-        let _e41 = weft_hair_angles(_e36, v_2, _e29);
+        let _e39 = weft_safe_normalize((_e25 + (_e31 * n_3)), _e25);
+        let _e42 = weft_hair_sigma_a_scaled(base, in_3.fibre.w);
+        let _e43 = hair_from_varyings(in_3, _e42);
+        let _e44 = weft_hair_angles(_e39, v_2, _e32);
         {
-            let _e43 = weft_hair_fast(_e40, _e36, v_2, _e29);
-            lobes = _e43;
+            let _e46 = weft_hair_fast(_e43, _e39, v_2, _e32);
+            lobes = _e46;
         }
         let body = smoothstep(-0.25f, HAIR_TERMINATOR, n_dot_l);
-        let _e50 = lobes.back;
-        let multiple = (base * (vec3(1f) - _e50));
-        let _e54 = lobes.s;
-        let direct = ((_e54 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
-        let _e63 = lobes.back;
-        color = ((direct * _e30) + (_e31 * (multiple + _e63)));
+        let _e53 = lobes.back;
+        let multiple = (base * (vec3(1f) - _e53));
+        let _e57 = lobes.s;
+        let direct = ((_e57 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
+        let _e66 = lobes.back;
+        color = ((direct * _e33) + (_e34 * (multiple + _e66)));
     }
-    let _e67 = color;
-    let radiance = clamp(_e67, vec3(0f), vec3(65504f));
+    let _e70 = color;
+    let radiance = clamp(_e70, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

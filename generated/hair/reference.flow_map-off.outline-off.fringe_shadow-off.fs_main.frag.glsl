@@ -564,23 +564,23 @@ float hair_value_noise(float x_8, float p) {
     return (mix(_e16, _e18, ((f_1 * f_1) * (3.0 - (2.0 * f_1)))) - 0.5);
 }
 
-float hair_jitter(vec2 uv0_1, vec4 per_vertex) {
-    vec4 _e4 = texture(_group_1_binding_6_fs, vec2(uv0_1));
-    float mask = step(0.8, _e4.x);
-    float c_2 = per_vertex.x;
-    float s_8 = per_vertex.y;
+float hair_jitter(vec2 uv0_1, vec2 rotation, float noise_period) {
+    vec4 _e5 = texture(_group_1_binding_6_fs, vec2(uv0_1));
+    float mask = step(0.8, _e5.x);
+    float c_2 = rotation.x;
+    float s_8 = rotation.y;
     vec2 rotated = vec2(((c_2 * uv0_1.x) + (s_8 * uv0_1.y)), ((-(s_8) * uv0_1.x) + (c_2 * uv0_1.y)));
-    vec4 _e27 = _group_1_binding_0_fs.jitter_map_st;
-    vec2 _e28 = weft_transform_uv(((mask > 0.5) ? rotated : uv0_1), _e27);
-    vec4 _e31 = texture(_group_1_binding_5_fs, vec2(_e28));
-    float j = _e31.x;
-    uint _e37 = _group_1_binding_0_fs.strand_along_tangent;
-    float across = ((_e37 != 0u) ? _e28.y : _e28.x);
-    float _e43 = _group_1_binding_0_fs.jitter_strength;
-    float _e47 = _group_1_binding_0_fs.strand_noise;
-    float _e50 = _group_1_binding_0_fs.strand_density;
-    float _e53 = hair_value_noise((across * _e50), per_vertex.w);
-    return ((_e43 * j) + (_e47 * _e53));
+    vec4 _e28 = _group_1_binding_0_fs.jitter_map_st;
+    vec2 _e29 = weft_transform_uv(((mask > 0.5) ? rotated : uv0_1), _e28);
+    vec4 _e32 = texture(_group_1_binding_5_fs, vec2(_e29));
+    float j = _e32.x;
+    uint _e38 = _group_1_binding_0_fs.strand_along_tangent;
+    float across = ((_e38 != 0u) ? _e29.y : _e29.x);
+    float _e44 = _group_1_binding_0_fs.strand_density;
+    float _e46 = hair_value_noise((across * _e44), noise_period);
+    float _e49 = _group_1_binding_0_fs.jitter_strength;
+    float _e53 = _group_1_binding_0_fs.strand_noise;
+    return ((_e49 * j) + (_e53 * _e46));
 }
 
 void main() {
@@ -599,30 +599,30 @@ void main() {
     vec3 n_3 = _e19.n;
     mat3x3 _e23 = weft_tangent_frame(n_3, in_1.world_tangent);
     vec3 _e25 = hair_strand(_e23, in_1.uv0_);
-    float _e28 = hair_jitter(in_1.uv0_, in_1.jitter);
-    vec3 _e29 = weft_main_light_direction();
-    vec3 _e30 = weft_main_light_radiance();
-    vec3 _e31 = weft_sh_irradiance(n_3);
-    float n_dot_l = dot(n_3, _e29);
+    float _e31 = hair_jitter(in_1.uv0_, in_1.jitter.xy, in_1.jitter.w);
+    vec3 _e32 = weft_main_light_direction();
+    vec3 _e33 = weft_main_light_radiance();
+    vec3 _e34 = weft_sh_irradiance(n_3);
+    float n_dot_l = dot(n_3, _e32);
     {
-        vec3 _e36 = weft_safe_normalize((_e25 + (_e28 * n_3)), _e25);
-        vec3 _e39 = weft_hair_sigma_a_scaled(base, in_1.fibre.w);
-        WeftHair _e40 = hair_from_varyings(in_1, _e39);
-        WeftHairAngles _e41 = weft_hair_angles(_e36, v_3, _e29);
+        vec3 _e39 = weft_safe_normalize((_e25 + (_e31 * n_3)), _e25);
+        vec3 _e42 = weft_hair_sigma_a_scaled(base, in_1.fibre.w);
+        WeftHair _e43 = hair_from_varyings(in_1, _e42);
+        WeftHairAngles _e44 = weft_hair_angles(_e39, v_3, _e32);
         {
-            WeftHairLobes _e44 = weft_hair_mean(_e40, _e41, HAIR_REFERENCE_CELLS);
-            lobes = _e44;
+            WeftHairLobes _e47 = weft_hair_mean(_e43, _e44, HAIR_REFERENCE_CELLS);
+            lobes = _e47;
         }
         float body = smoothstep(-0.25, HAIR_TERMINATOR, n_dot_l);
-        vec3 _e51 = lobes.back;
-        vec3 multiple = (base * (vec3(1.0) - _e51));
-        vec3 _e55 = lobes.s;
-        vec3 direct = ((_e55 * body) + (multiple * (WEFT_INV_PI * clamp(n_dot_l, 0.0, 1.0))));
-        vec3 _e64 = lobes.back;
-        color = ((direct * _e30) + (_e31 * (multiple + _e64)));
+        vec3 _e54 = lobes.back;
+        vec3 multiple = (base * (vec3(1.0) - _e54));
+        vec3 _e58 = lobes.s;
+        vec3 direct = ((_e58 * body) + (multiple * (WEFT_INV_PI * clamp(n_dot_l, 0.0, 1.0))));
+        vec3 _e67 = lobes.back;
+        color = ((direct * _e33) + (_e34 * (multiple + _e67)));
     }
-    vec3 _e68 = color;
-    vec3 radiance = clamp(_e68, vec3(0.0), vec3(65504.0));
+    vec3 _e71 = color;
+    vec3 radiance = clamp(_e71, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

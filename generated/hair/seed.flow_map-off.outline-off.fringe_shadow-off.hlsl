@@ -406,24 +406,24 @@ float hair_value_noise(float x_3, float p)
     return (lerp(_e16, _e18, ((f * f) * (3.0 - (2.0 * f)))) - 0.5);
 }
 
-float hair_jitter(float2 uv0_1, float4 per_vertex)
+float hair_jitter(float2 uv0_1, float2 rotation, float noise_period)
 {
-    float4 _e4 = uv_rotate_mask.Sample(material_sampler, uv0_1);
-    float mask = step(0.8, _e4.x);
-    float c = per_vertex.x;
-    float s_2 = per_vertex.y;
+    float4 _e5 = uv_rotate_mask.Sample(material_sampler, uv0_1);
+    float mask = step(0.8, _e5.x);
+    float c = rotation.x;
+    float s_2 = rotation.y;
     float2 rotated = float2(((c * uv0_1.x) + (s_2 * uv0_1.y)), ((-(s_2) * uv0_1.x) + (c * uv0_1.y)));
-    float4 _e27 = material.jitter_map_st;
-    const float2 _e28 = weft_transform_uv(((mask > 0.5) ? rotated : uv0_1), _e27);
-    float4 _e31 = jitter_map.Sample(material_sampler, _e28);
-    float j = _e31.x;
-    uint _e37 = material.strand_along_tangent;
-    float across = ((_e37 != 0u) ? _e28.y : _e28.x);
-    float _e43 = material.jitter_strength;
-    float _e47 = material.strand_noise;
-    float _e50 = material.strand_density;
-    const float _e53 = hair_value_noise((across * _e50), per_vertex.w);
-    return ((_e43 * j) + (_e47 * _e53));
+    float4 _e28 = material.jitter_map_st;
+    const float2 _e29 = weft_transform_uv(((mask > 0.5) ? rotated : uv0_1), _e28);
+    float4 _e32 = jitter_map.Sample(material_sampler, _e29);
+    float j = _e32.x;
+    uint _e38 = material.strand_along_tangent;
+    float across = ((_e38 != 0u) ? _e29.y : _e29.x);
+    float _e44 = material.strand_density;
+    const float _e46 = hair_value_noise((across * _e44), noise_period);
+    float _e49 = material.jitter_strength;
+    float _e53 = material.strand_noise;
+    return ((_e49 * j) + (_e53 * _e46));
 }
 
 float hair_kajiya_kay(float3 t, float3 h_1, float exponent)
@@ -512,31 +512,31 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 n_3 = _e19.n;
     const float3x3 _e23 = weft_tangent_frame(n_3, in_1.world_tangent);
     const float3 _e25 = hair_strand(_e23, in_1.uv0_);
-    const float _e28 = hair_jitter(in_1.uv0_, in_1.jitter);
-    const float3 _e29 = weft_main_light_direction();
-    const float3 _e30 = weft_main_light_radiance();
-    const float3 _e31 = weft_sh_irradiance(n_3);
-    float n_dot_l = dot(n_3, _e29);
+    const float _e31 = hair_jitter(in_1.uv0_, in_1.jitter.xy, in_1.jitter.w);
+    const float3 _e32 = weft_main_light_direction();
+    const float3 _e33 = weft_main_light_radiance();
+    const float3 _e34 = weft_sh_irradiance(n_3);
+    float n_dot_l = dot(n_3, _e32);
     {
-        const float3 _e35 = weft_safe_normalize((_e29 + v_1), n_3);
-        float _e38 = material.primary_shift;
-        const float3 _e42 = weft_safe_normalize((_e25 + ((_e38 + _e28) * n_3)), _e25);
-        float _e45 = material.secondary_shift;
-        const float3 _e49 = weft_safe_normalize((_e25 + ((_e45 + _e28) * n_3)), _e25);
-        float4 _e52 = material.primary_color;
-        float _e56 = material.primary_intensity;
-        float _e59 = material.primary_exponent;
-        const float _e60 = hair_kajiya_kay(_e42, _e35, _e59);
-        float3 primary = (_e52.xyz * (_e56 * _e60));
-        float4 _e65 = material.secondary_color;
-        float _e69 = material.secondary_intensity;
-        float _e72 = material.secondary_exponent;
-        const float _e73 = hair_kajiya_kay(_e49, _e35, _e72);
-        float3 secondary = (_e65.xyz * (_e69 * _e73));
-        float3 direct = (((((base + primary) + secondary) * WEFT_INV_PI) * _e30) * saturate(n_dot_l));
-        color = (direct + (_e31 * base));
+        const float3 _e38 = weft_safe_normalize((_e32 + v_1), n_3);
+        float _e41 = material.primary_shift;
+        const float3 _e45 = weft_safe_normalize((_e25 + ((_e41 + _e31) * n_3)), _e25);
+        float _e48 = material.secondary_shift;
+        const float3 _e52 = weft_safe_normalize((_e25 + ((_e48 + _e31) * n_3)), _e25);
+        float4 _e55 = material.primary_color;
+        float _e59 = material.primary_intensity;
+        float _e62 = material.primary_exponent;
+        const float _e63 = hair_kajiya_kay(_e45, _e38, _e62);
+        float3 primary = (_e55.xyz * (_e59 * _e63));
+        float4 _e68 = material.secondary_color;
+        float _e72 = material.secondary_intensity;
+        float _e75 = material.secondary_exponent;
+        const float _e76 = hair_kajiya_kay(_e52, _e38, _e75);
+        float3 secondary = (_e68.xyz * (_e72 * _e76));
+        float3 direct = (((((base + primary) + secondary) * WEFT_INV_PI) * _e33) * saturate(n_dot_l));
+        color = (direct + (_e34 * base));
     }
-    float3 _e85 = color;
-    float3 radiance = clamp(_e85, (0.0).xxx, (65504.0).xxx);
+    float3 _e88 = color;
+    float3 radiance = clamp(_e88, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

@@ -381,28 +381,29 @@ float hair_value_noise(
 
 float hair_jitter(
     metal::float2 uv0_1,
-    metal::float4 per_vertex,
+    metal::float2 rotation,
+    float noise_period,
     constant WeftMaterial& material,
     metal::sampler material_sampler,
     metal::texture2d<float, metal::access::sample> jitter_map,
     metal::texture2d<float, metal::access::sample> uv_rotate_mask
 ) {
-    metal::float4 _e4 = uv_rotate_mask.sample(material_sampler, uv0_1);
-    float mask = metal::step(0.8, _e4.x);
-    float c = per_vertex.x;
-    float s_2 = per_vertex.y;
+    metal::float4 _e5 = uv_rotate_mask.sample(material_sampler, uv0_1);
+    float mask = metal::step(0.8, _e5.x);
+    float c = rotation.x;
+    float s_2 = rotation.y;
     metal::float2 rotated = metal::float2((c * uv0_1.x) + (s_2 * uv0_1.y), (-(s_2) * uv0_1.x) + (c * uv0_1.y));
-    metal::float4 _e27 = material.jitter_map_st;
-    metal::float2 _e28 = weft_transform_uv((mask > 0.5) ? rotated : uv0_1, _e27);
-    metal::float4 _e31 = jitter_map.sample(material_sampler, _e28);
-    float j = _e31.x;
-    uint _e37 = material.strand_along_tangent;
-    float across = (_e37 != 0u) ? _e28.y : _e28.x;
-    float _e43 = material.jitter_strength;
-    float _e47 = material.strand_noise;
-    float _e50 = material.strand_density;
-    float _e53 = hair_value_noise(across * _e50, per_vertex.w);
-    return (_e43 * j) + (_e47 * _e53);
+    metal::float4 _e28 = material.jitter_map_st;
+    metal::float2 _e29 = weft_transform_uv((mask > 0.5) ? rotated : uv0_1, _e28);
+    metal::float4 _e32 = jitter_map.sample(material_sampler, _e29);
+    float j = _e32.x;
+    uint _e38 = material.strand_along_tangent;
+    float across = (_e38 != 0u) ? _e29.y : _e29.x;
+    float _e44 = material.strand_density;
+    float _e46 = hair_value_noise(across * _e44, noise_period);
+    float _e49 = material.jitter_strength;
+    float _e53 = material.strand_noise;
+    return (_e49 * j) + (_e53 * _e46);
 }
 
 float hair_kajiya_kay(
@@ -572,31 +573,31 @@ fragment fs_mainOutput fs_main(
     metal::float3 n_3 = _e19.n;
     metal::float3x3 _e23 = weft_tangent_frame(n_3, in_2.world_tangent);
     metal::float3 _e25 = hair_strand(_e23, in_2.uv0_, material);
-    float _e28 = hair_jitter(in_2.uv0_, in_2.jitter, material, material_sampler, jitter_map, uv_rotate_mask);
-    metal::float3 _e29 = weft_main_light_direction(weft_frame);
-    metal::float3 _e30 = weft_main_light_radiance(weft_frame);
-    metal::float3 _e31 = weft_sh_irradiance(n_3, weft_frame);
-    float n_dot_l = metal::dot(n_3, _e29);
+    float _e31 = hair_jitter(in_2.uv0_, in_2.jitter.xy, in_2.jitter.w, material, material_sampler, jitter_map, uv_rotate_mask);
+    metal::float3 _e32 = weft_main_light_direction(weft_frame);
+    metal::float3 _e33 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e34 = weft_sh_irradiance(n_3, weft_frame);
+    float n_dot_l = metal::dot(n_3, _e32);
     {
-        metal::float3 _e35 = weft_safe_normalize(_e29 + v_1, n_3);
-        float _e38 = material.primary_shift;
-        metal::float3 _e42 = weft_safe_normalize(_e25 + ((_e38 + _e28) * n_3), _e25);
-        float _e45 = material.secondary_shift;
-        metal::float3 _e49 = weft_safe_normalize(_e25 + ((_e45 + _e28) * n_3), _e25);
-        metal::float4 _e52 = material.primary_color;
-        float _e56 = material.primary_intensity;
-        float _e59 = material.primary_exponent;
-        float _e60 = hair_kajiya_kay(_e42, _e35, _e59);
-        metal::float3 primary = _e52.xyz * (_e56 * _e60);
-        metal::float4 _e65 = material.secondary_color;
-        float _e69 = material.secondary_intensity;
-        float _e72 = material.secondary_exponent;
-        float _e73 = hair_kajiya_kay(_e49, _e35, _e72);
-        metal::float3 secondary = _e65.xyz * (_e69 * _e73);
-        metal::float3 direct = ((((base + primary) + secondary) * WEFT_INV_PI) * _e30) * metal::saturate(n_dot_l);
-        color = direct + (_e31 * base);
+        metal::float3 _e38 = weft_safe_normalize(_e32 + v_1, n_3);
+        float _e41 = material.primary_shift;
+        metal::float3 _e45 = weft_safe_normalize(_e25 + ((_e41 + _e31) * n_3), _e25);
+        float _e48 = material.secondary_shift;
+        metal::float3 _e52 = weft_safe_normalize(_e25 + ((_e48 + _e31) * n_3), _e25);
+        metal::float4 _e55 = material.primary_color;
+        float _e59 = material.primary_intensity;
+        float _e62 = material.primary_exponent;
+        float _e63 = hair_kajiya_kay(_e45, _e38, _e62);
+        metal::float3 primary = _e55.xyz * (_e59 * _e63);
+        metal::float4 _e68 = material.secondary_color;
+        float _e72 = material.secondary_intensity;
+        float _e75 = material.secondary_exponent;
+        float _e76 = hair_kajiya_kay(_e52, _e38, _e75);
+        metal::float3 secondary = _e68.xyz * (_e72 * _e76);
+        metal::float3 direct = ((((base + primary) + secondary) * WEFT_INV_PI) * _e33) * metal::saturate(n_dot_l);
+        color = direct + (_e34 * base);
     }
-    metal::float3 _e85 = color;
-    metal::float3 radiance = metal::clamp(_e85, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e88 = color;
+    metal::float3 radiance = metal::clamp(_e88, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

@@ -306,23 +306,23 @@ float hair_value_noise(float x_3, float p) {
     return (mix(_e16, _e18, ((f_1 * f_1) * (3.0 - (2.0 * f_1)))) - 0.5);
 }
 
-float hair_jitter(vec2 uv0_1, vec4 per_vertex) {
-    vec4 _e4 = texture(_group_1_binding_6_fs, vec2(uv0_1));
-    float mask = step(0.8, _e4.x);
-    float c = per_vertex.x;
-    float s_2 = per_vertex.y;
+float hair_jitter(vec2 uv0_1, vec2 rotation, float noise_period) {
+    vec4 _e5 = texture(_group_1_binding_6_fs, vec2(uv0_1));
+    float mask = step(0.8, _e5.x);
+    float c = rotation.x;
+    float s_2 = rotation.y;
     vec2 rotated = vec2(((c * uv0_1.x) + (s_2 * uv0_1.y)), ((-(s_2) * uv0_1.x) + (c * uv0_1.y)));
-    vec4 _e27 = _group_1_binding_0_fs.jitter_map_st;
-    vec2 _e28 = weft_transform_uv(((mask > 0.5) ? rotated : uv0_1), _e27);
-    vec4 _e31 = texture(_group_1_binding_5_fs, vec2(_e28));
-    float j = _e31.x;
-    uint _e37 = _group_1_binding_0_fs.strand_along_tangent;
-    float across = ((_e37 != 0u) ? _e28.y : _e28.x);
-    float _e43 = _group_1_binding_0_fs.jitter_strength;
-    float _e47 = _group_1_binding_0_fs.strand_noise;
-    float _e50 = _group_1_binding_0_fs.strand_density;
-    float _e53 = hair_value_noise((across * _e50), per_vertex.w);
-    return ((_e43 * j) + (_e47 * _e53));
+    vec4 _e28 = _group_1_binding_0_fs.jitter_map_st;
+    vec2 _e29 = weft_transform_uv(((mask > 0.5) ? rotated : uv0_1), _e28);
+    vec4 _e32 = texture(_group_1_binding_5_fs, vec2(_e29));
+    float j = _e32.x;
+    uint _e38 = _group_1_binding_0_fs.strand_along_tangent;
+    float across = ((_e38 != 0u) ? _e29.y : _e29.x);
+    float _e44 = _group_1_binding_0_fs.strand_density;
+    float _e46 = hair_value_noise((across * _e44), noise_period);
+    float _e49 = _group_1_binding_0_fs.jitter_strength;
+    float _e53 = _group_1_binding_0_fs.strand_noise;
+    return ((_e49 * j) + (_e53 * _e46));
 }
 
 float hair_kajiya_kay(vec3 t, vec3 h_1, float exponent) {
@@ -348,32 +348,32 @@ void main() {
     vec3 n_3 = _e19.n;
     mat3x3 _e23 = weft_tangent_frame(n_3, in_1.world_tangent);
     vec3 _e25 = hair_strand(_e23, in_1.uv0_);
-    float _e28 = hair_jitter(in_1.uv0_, in_1.jitter);
-    vec3 _e29 = weft_main_light_direction();
-    vec3 _e30 = weft_main_light_radiance();
-    vec3 _e31 = weft_sh_irradiance(n_3);
-    float n_dot_l = dot(n_3, _e29);
+    float _e31 = hair_jitter(in_1.uv0_, in_1.jitter.xy, in_1.jitter.w);
+    vec3 _e32 = weft_main_light_direction();
+    vec3 _e33 = weft_main_light_radiance();
+    vec3 _e34 = weft_sh_irradiance(n_3);
+    float n_dot_l = dot(n_3, _e32);
     {
-        vec3 _e35 = weft_safe_normalize((_e29 + v_1), n_3);
-        float _e38 = _group_1_binding_0_fs.primary_shift;
-        vec3 _e42 = weft_safe_normalize((_e25 + ((_e38 + _e28) * n_3)), _e25);
-        float _e45 = _group_1_binding_0_fs.secondary_shift;
-        vec3 _e49 = weft_safe_normalize((_e25 + ((_e45 + _e28) * n_3)), _e25);
-        vec4 _e52 = _group_1_binding_0_fs.primary_color;
-        float _e56 = _group_1_binding_0_fs.primary_intensity;
-        float _e59 = _group_1_binding_0_fs.primary_exponent;
-        float _e60 = hair_kajiya_kay(_e42, _e35, _e59);
-        vec3 primary = (_e52.xyz * (_e56 * _e60));
-        vec4 _e65 = _group_1_binding_0_fs.secondary_color;
-        float _e69 = _group_1_binding_0_fs.secondary_intensity;
-        float _e72 = _group_1_binding_0_fs.secondary_exponent;
-        float _e73 = hair_kajiya_kay(_e49, _e35, _e72);
-        vec3 secondary = (_e65.xyz * (_e69 * _e73));
-        vec3 direct = (((((base + primary) + secondary) * WEFT_INV_PI) * _e30) * clamp(n_dot_l, 0.0, 1.0));
-        color = (direct + (_e31 * base));
+        vec3 _e38 = weft_safe_normalize((_e32 + v_1), n_3);
+        float _e41 = _group_1_binding_0_fs.primary_shift;
+        vec3 _e45 = weft_safe_normalize((_e25 + ((_e41 + _e31) * n_3)), _e25);
+        float _e48 = _group_1_binding_0_fs.secondary_shift;
+        vec3 _e52 = weft_safe_normalize((_e25 + ((_e48 + _e31) * n_3)), _e25);
+        vec4 _e55 = _group_1_binding_0_fs.primary_color;
+        float _e59 = _group_1_binding_0_fs.primary_intensity;
+        float _e62 = _group_1_binding_0_fs.primary_exponent;
+        float _e63 = hair_kajiya_kay(_e45, _e38, _e62);
+        vec3 primary = (_e55.xyz * (_e59 * _e63));
+        vec4 _e68 = _group_1_binding_0_fs.secondary_color;
+        float _e72 = _group_1_binding_0_fs.secondary_intensity;
+        float _e75 = _group_1_binding_0_fs.secondary_exponent;
+        float _e76 = hair_kajiya_kay(_e52, _e38, _e75);
+        vec3 secondary = (_e68.xyz * (_e72 * _e76));
+        vec3 direct = (((((base + primary) + secondary) * WEFT_INV_PI) * _e33) * clamp(n_dot_l, 0.0, 1.0));
+        color = (direct + (_e34 * base));
     }
-    vec3 _e85 = color;
-    vec3 radiance = clamp(_e85, vec3(0.0), vec3(65504.0));
+    vec3 _e88 = color;
+    vec3 radiance = clamp(_e88, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

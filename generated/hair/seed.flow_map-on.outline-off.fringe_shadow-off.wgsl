@@ -331,23 +331,23 @@ fn hair_value_noise(x_3: f32, p: f32) -> f32 {
     return (mix(_e16, _e18, ((f_1 * f_1) * (3f - (2f * f_1)))) - 0.5f);
 }
 
-fn hair_jitter(uv0_1: vec2<f32>, per_vertex: vec4<f32>) -> f32 {
-    let _e4 = textureSample(uv_rotate_mask, material_sampler, uv0_1);
-    let mask = step(0.8f, _e4.x);
-    let c = per_vertex.x;
-    let s_2 = per_vertex.y;
+fn hair_jitter(uv0_1: vec2<f32>, rotation: vec2<f32>, noise_period: f32) -> f32 {
+    let _e5 = textureSample(uv_rotate_mask, material_sampler, uv0_1);
+    let mask = step(0.8f, _e5.x);
+    let c = rotation.x;
+    let s_2 = rotation.y;
     let rotated = vec2<f32>(((c * uv0_1.x) + (s_2 * uv0_1.y)), ((-(s_2) * uv0_1.x) + (c * uv0_1.y)));
-    let _e27 = material.jitter_map_st;
-    let _e28 = weft_transform_uv(select(uv0_1, rotated, (mask > 0.5f)), _e27);
-    let _e31 = textureSample(jitter_map, material_sampler, _e28);
-    let j = _e31.x;
-    let _e37 = material.strand_along_tangent;
-    let across = select(_e28.x, _e28.y, (_e37 != 0u));
-    let _e43 = material.jitter_strength;
-    let _e47 = material.strand_noise;
-    let _e50 = material.strand_density;
-    let _e53 = hair_value_noise((across * _e50), per_vertex.w);
-    return ((_e43 * j) + (_e47 * _e53));
+    let _e28 = material.jitter_map_st;
+    let _e29 = weft_transform_uv(select(uv0_1, rotated, (mask > 0.5f)), _e28);
+    let _e32 = textureSample(jitter_map, material_sampler, _e29);
+    let j = _e32.x;
+    let _e38 = material.strand_along_tangent;
+    let across = select(_e29.x, _e29.y, (_e38 != 0u));
+    let _e44 = material.strand_density;
+    let _e46 = hair_value_noise((across * _e44), noise_period);
+    let _e49 = material.jitter_strength;
+    let _e53 = material.strand_noise;
+    return ((_e49 * j) + (_e53 * _e46));
 }
 
 fn hair_kajiya_kay(t: vec3<f32>, h_1: vec3<f32>, exponent: f32) -> f32 {
@@ -411,31 +411,31 @@ fn fs_main(in_1: HairVaryings) -> @location(0) vec4<f32> {
     let n_3 = _e19.n;
     let _e23 = weft_tangent_frame(n_3, in_1.world_tangent);
     let _e25 = hair_strand(_e23, in_1.uv0_);
-    let _e28 = hair_jitter(in_1.uv0_, in_1.jitter);
-    let _e29 = weft_main_light_direction();
-    let _e30 = weft_main_light_radiance();
-    let _e31 = weft_sh_irradiance(n_3);
-    let n_dot_l = dot(n_3, _e29);
+    let _e31 = hair_jitter(in_1.uv0_, in_1.jitter.xy, in_1.jitter.w);
+    let _e32 = weft_main_light_direction();
+    let _e33 = weft_main_light_radiance();
+    let _e34 = weft_sh_irradiance(n_3);
+    let n_dot_l = dot(n_3, _e32);
     {
-        let _e35 = weft_safe_normalize((_e29 + v_1), n_3);
-        let _e38 = material.primary_shift;
-        let _e42 = weft_safe_normalize((_e25 + ((_e38 + _e28) * n_3)), _e25);
-        let _e45 = material.secondary_shift;
-        let _e49 = weft_safe_normalize((_e25 + ((_e45 + _e28) * n_3)), _e25);
-        let _e52 = material.primary_color;
-        let _e56 = material.primary_intensity;
-        let _e59 = material.primary_exponent;
-        let _e60 = hair_kajiya_kay(_e42, _e35, _e59);
-        let primary = (_e52.xyz * (_e56 * _e60));
-        let _e65 = material.secondary_color;
-        let _e69 = material.secondary_intensity;
-        let _e72 = material.secondary_exponent;
-        let _e73 = hair_kajiya_kay(_e49, _e35, _e72);
-        let secondary = (_e65.xyz * (_e69 * _e73));
-        let direct = (((((base + primary) + secondary) * WEFT_INV_PI) * _e30) * saturate(n_dot_l));
-        color = (direct + (_e31 * base));
+        let _e38 = weft_safe_normalize((_e32 + v_1), n_3);
+        let _e41 = material.primary_shift;
+        let _e45 = weft_safe_normalize((_e25 + ((_e41 + _e31) * n_3)), _e25);
+        let _e48 = material.secondary_shift;
+        let _e52 = weft_safe_normalize((_e25 + ((_e48 + _e31) * n_3)), _e25);
+        let _e55 = material.primary_color;
+        let _e59 = material.primary_intensity;
+        let _e62 = material.primary_exponent;
+        let _e63 = hair_kajiya_kay(_e45, _e38, _e62);
+        let primary = (_e55.xyz * (_e59 * _e63));
+        let _e68 = material.secondary_color;
+        let _e72 = material.secondary_intensity;
+        let _e75 = material.secondary_exponent;
+        let _e76 = hair_kajiya_kay(_e52, _e38, _e75);
+        let secondary = (_e68.xyz * (_e72 * _e76));
+        let direct = (((((base + primary) + secondary) * WEFT_INV_PI) * _e33) * saturate(n_dot_l));
+        color = (direct + (_e34 * base));
     }
-    let _e85 = color;
-    let radiance = clamp(_e85, vec3(0f), vec3(65504f));
+    let _e88 = color;
+    let radiance = clamp(_e88, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

@@ -105,7 +105,7 @@ fn fs_main(in: HairVaryings) -> @location(0) vec4<f32> {
     let n = surface.n;
     let frame = weft_tangent_frame(n, in.world_tangent);
     let strand = hair_strand(frame, in.uv0);
-    let shift = hair_jitter(in.uv0, in.jitter);
+    let shift = hair_jitter(in.uv0, in.jitter.xy, in.jitter.w);
     let l = weft_main_light_direction();
     let light = weft_main_light_radiance();
     let ambient = weft_sh_irradiance(n);
@@ -178,19 +178,21 @@ fn hair_strand(frame: mat3x3<f32>, uv0: vec2<f32>) -> vec3<f32> {
 // channel, with its own tiling; in the masked region of the UV-rotation mask,
 // step(0.8, mask), the uv is first rotated by the direction angle, as the
 // seed does for cards unwrapped across the strands) times its strength, plus
-// a procedural per-strand noise across the strands. `per_vertex`: the flat
-// varying's cos and sin of the direction angle (xy) and the noise's period (w).
-fn hair_jitter(uv0: vec2<f32>, per_vertex: vec4<f32>) -> f32 {
+// a procedural per-strand noise across the strands. `rotation`: cos and sin
+// of the direction angle; `noise_period`: hair_noise_period of the density
+// (both from the vertex stage's flat `jitter` varying).
+fn hair_jitter(uv0: vec2<f32>, rotation: vec2<f32>, noise_period: f32) -> f32 {
     let mask = step(0.8, textureSample(uv_rotate_mask, material_sampler, uv0).r);
-    let c = per_vertex.x;
-    let s = per_vertex.y;
+    let c = rotation.x;
+    let s = rotation.y;
     // HLSL mul(float2x2(c, s, -s, c), uv): rows (c, s) and (-s, c).
     let rotated = vec2<f32>(c * uv0.x + s * uv0.y, -s * uv0.x + c * uv0.y);
     let uv_j = weft_transform_uv(select(uv0, rotated, mask > 0.5), material.jitter_map_st);
     let j = textureSample(jitter_map, material_sampler, uv_j).r;
     // Across the strands: u when they run along v, and v otherwise.
     let across = select(uv_j.x, uv_j.y, material.strand_along_tangent != 0u);
-    return material.jitter_strength * j + material.strand_noise * hair_value_noise(across * material.strand_density, per_vertex.w);
+    let noise = hair_value_noise(across * material.strand_density, noise_period);
+    return material.jitter_strength * j + material.strand_noise * noise;
 }
 
 // The noise's period in cells: the strand density, rounded, at least 1.

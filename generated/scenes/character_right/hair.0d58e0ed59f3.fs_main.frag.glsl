@@ -324,16 +324,16 @@ vec2 weft_transform_uv_k4_(vec2 uv) {
     return (uv + vec2(0.0, 0.0));
 }
 
-float hair_jitter(vec2 uv0_1, vec4 per_vertex) {
-    float c_1 = per_vertex.x;
-    float s_4 = per_vertex.y;
+float hair_jitter(vec2 uv0_1, vec2 rotation, float noise_period) {
+    float c_1 = rotation.x;
+    float s_4 = rotation.y;
     vec2 rotated = vec2(((c_1 * uv0_1.x) + (s_4 * uv0_1.y)), ((-(s_4) * uv0_1.x) + (c_1 * uv0_1.y)));
-    vec2 _e17 = weft_transform_uv_k4_(uv0_1);
-    vec4 _e20 = texture(_group_1_binding_5_fs, vec2(_e17));
-    float j = _e20.x;
-    float across = _e17.x;
-    float _e27 = hair_value_noise((across * 128.0), per_vertex.w);
-    return (j + (0.2 * _e27));
+    vec2 _e18 = weft_transform_uv_k4_(uv0_1);
+    vec4 _e21 = texture(_group_1_binding_5_fs, vec2(_e18));
+    float j = _e21.x;
+    float across = _e18.x;
+    float _e26 = hair_value_noise((across * 128.0), noise_period);
+    return (j + (0.2 * _e26));
 }
 
 WeftHair weft_hair_params_k5_() {
@@ -380,29 +380,29 @@ void main() {
     vec3 n_3 = _e6.n;
     mat3x3 _e10 = weft_tangent_frame(n_3, in_3.world_tangent);
     vec3 _e12 = hair_strand(_e10, in_3.uv0_);
-    float _e15 = hair_jitter(in_3.uv0_, in_3.jitter);
-    vec3 _e16 = weft_main_light_direction();
-    vec3 _e17 = weft_main_light_radiance();
-    vec3 _e18 = weft_sh_irradiance(n_3);
-    float n_dot_l = dot(n_3, _e16);
+    float _e18 = hair_jitter(in_3.uv0_, in_3.jitter.xy, in_3.jitter.w);
+    vec3 _e19 = weft_main_light_direction();
+    vec3 _e20 = weft_main_light_radiance();
+    vec3 _e21 = weft_sh_irradiance(n_3);
+    float n_dot_l = dot(n_3, _e19);
     {
-        vec3 _e23 = weft_safe_normalize((_e12 + (_e15 * n_3)), _e12);
-        vec3 _e26 = weft_hair_sigma_a_scaled_k8_(in_3.fibre.w);
-        WeftHair _e27 = hair_from_varyings(in_3, _e26);
+        vec3 _e26 = weft_safe_normalize((_e12 + (_e18 * n_3)), _e12);
+        vec3 _e29 = weft_hair_sigma_a_scaled_k8_(in_3.fibre.w);
+        WeftHair _e30 = hair_from_varyings(in_3, _e29);
         {
-            WeftHairLobes _e29 = weft_hair_fast(_e27, _e23, v_4, _e16);
-            lobes = _e29;
+            WeftHairLobes _e32 = weft_hair_fast(_e30, _e26, v_4, _e19);
+            lobes = _e32;
         }
         float body = smoothstep(-0.25, HAIR_TERMINATOR, n_dot_l);
-        vec3 _e35 = lobes.back;
-        vec3 multiple = (vec3(0.073238954, 0.019606648, 0.0059810597) * (vec3(1.0) - _e35));
-        vec3 _e39 = lobes.s;
-        vec3 direct = ((_e39 * body) + (multiple * (WEFT_INV_PI * clamp(n_dot_l, 0.0, 1.0))));
-        vec3 _e48 = lobes.back;
-        color = ((direct * _e17) + (_e18 * (multiple + _e48)));
+        vec3 _e38 = lobes.back;
+        vec3 multiple = (vec3(0.073238954, 0.019606648, 0.0059810597) * (vec3(1.0) - _e38));
+        vec3 _e42 = lobes.s;
+        vec3 direct = ((_e42 * body) + (multiple * (WEFT_INV_PI * clamp(n_dot_l, 0.0, 1.0))));
+        vec3 _e51 = lobes.back;
+        color = ((direct * _e20) + (_e21 * (multiple + _e51)));
     }
-    vec3 _e52 = color;
-    vec3 radiance = clamp(_e52, vec3(0.0), vec3(65504.0));
+    vec3 _e55 = color;
+    vec3 radiance = clamp(_e55, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, 1.0);
     return;
 }

@@ -352,16 +352,16 @@ fn weft_transform_uv_k4_(uv: vec2<f32>) -> vec2<f32> {
     return (uv + vec2<f32>(0f, 0f));
 }
 
-fn hair_jitter(uv0_1: vec2<f32>, per_vertex: vec4<f32>) -> f32 {
-    let c_1 = per_vertex.x;
-    let s_4 = per_vertex.y;
+fn hair_jitter(uv0_1: vec2<f32>, rotation: vec2<f32>, noise_period: f32) -> f32 {
+    let c_1 = rotation.x;
+    let s_4 = rotation.y;
     let rotated = vec2<f32>(((c_1 * uv0_1.x) + (s_4 * uv0_1.y)), ((-(s_4) * uv0_1.x) + (c_1 * uv0_1.y)));
-    let _e17 = weft_transform_uv_k4_(uv0_1);
-    let _e20 = textureSample(jitter_map, material_sampler, _e17);
-    let j = _e20.x;
-    let across = _e17.x;
-    let _e27 = hair_value_noise((across * 128f), per_vertex.w);
-    return (j + (0.2f * _e27));
+    let _e18 = weft_transform_uv_k4_(uv0_1);
+    let _e21 = textureSample(jitter_map, material_sampler, _e18);
+    let j = _e21.x;
+    let across = _e18.x;
+    let _e26 = hair_value_noise((across * 128f), noise_period);
+    return (j + (0.2f * _e26));
 }
 
 fn weft_hair_params_k5_() -> WeftHair {
@@ -513,28 +513,28 @@ fn fs_main(in_3: HairVaryings) -> @location(0) vec4<f32> {
     let n_3 = _e6.n;
     let _e10 = weft_tangent_frame(n_3, in_3.world_tangent);
     let _e12 = hair_strand(_e10, in_3.uv0_);
-    let _e15 = hair_jitter(in_3.uv0_, in_3.jitter);
-    let _e16 = weft_main_light_direction();
-    let _e17 = weft_main_light_radiance();
-    let _e18 = weft_sh_irradiance(n_3);
-    let n_dot_l = dot(n_3, _e16);
+    let _e18 = hair_jitter(in_3.uv0_, in_3.jitter.xy, in_3.jitter.w);
+    let _e19 = weft_main_light_direction();
+    let _e20 = weft_main_light_radiance();
+    let _e21 = weft_sh_irradiance(n_3);
+    let n_dot_l = dot(n_3, _e19);
     {
-        let _e23 = weft_safe_normalize((_e12 + (_e15 * n_3)), _e12);
-        let _e26 = weft_hair_sigma_a_scaled_k8_(in_3.fibre.w);
-        let _e27 = hair_from_varyings(in_3, _e26);
+        let _e26 = weft_safe_normalize((_e12 + (_e18 * n_3)), _e12);
+        let _e29 = weft_hair_sigma_a_scaled_k8_(in_3.fibre.w);
+        let _e30 = hair_from_varyings(in_3, _e29);
         {
-            let _e29 = weft_hair_fast(_e27, _e23, v_4, _e16);
-            lobes = _e29;
+            let _e32 = weft_hair_fast(_e30, _e26, v_4, _e19);
+            lobes = _e32;
         }
         let body = smoothstep(-0.25f, HAIR_TERMINATOR, n_dot_l);
-        let _e35 = lobes.back;
-        let multiple = (vec3<f32>(0.073238954f, 0.019606648f, 0.0059810597f) * (vec3(1f) - _e35));
-        let _e39 = lobes.s;
-        let direct = ((_e39 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
-        let _e48 = lobes.back;
-        color = ((direct * _e17) + (_e18 * (multiple + _e48)));
+        let _e38 = lobes.back;
+        let multiple = (vec3<f32>(0.073238954f, 0.019606648f, 0.0059810597f) * (vec3(1f) - _e38));
+        let _e42 = lobes.s;
+        let direct = ((_e42 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
+        let _e51 = lobes.back;
+        color = ((direct * _e20) + (_e21 * (multiple + _e51)));
     }
-    let _e52 = color;
-    let radiance = clamp(_e52, vec3(0f), vec3(65504f));
+    let _e55 = color;
+    let radiance = clamp(_e55, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, 1f);
 }

@@ -420,19 +420,20 @@ metal::float2 weft_transform_uv_k4_(
 
 float hair_jitter(
     metal::float2 uv0_1,
-    metal::float4 per_vertex,
+    metal::float2 rotation,
+    float noise_period,
     metal::sampler material_sampler,
     metal::texture2d<float, metal::access::sample> jitter_map
 ) {
-    float c_1 = per_vertex.x;
-    float s_4 = per_vertex.y;
+    float c_1 = rotation.x;
+    float s_4 = rotation.y;
     metal::float2 rotated = metal::float2((c_1 * uv0_1.x) + (s_4 * uv0_1.y), (-(s_4) * uv0_1.x) + (c_1 * uv0_1.y));
-    metal::float2 _e17 = weft_transform_uv_k4_(uv0_1);
-    metal::float4 _e20 = jitter_map.sample(material_sampler, _e17);
-    float j = _e20.x;
-    float across = _e17.x;
-    float _e27 = hair_value_noise(across * 128.0, per_vertex.w);
-    return j + (0.2 * _e27);
+    metal::float2 _e18 = weft_transform_uv_k4_(uv0_1);
+    metal::float4 _e21 = jitter_map.sample(material_sampler, _e18);
+    float j = _e21.x;
+    float across = _e18.x;
+    float _e26 = hair_value_noise(across * 128.0, noise_period);
+    return j + (0.2 * _e26);
 }
 
 WeftHair weft_hair_params_k5_(
@@ -661,28 +662,28 @@ fragment fs_mainOutput fs_main(
     metal::float3 n_3 = _e6.n;
     metal::float3x3 _e10 = weft_tangent_frame(n_3, in_3.world_tangent);
     metal::float3 _e12 = hair_strand(_e10, in_3.uv0_);
-    float _e15 = hair_jitter(in_3.uv0_, in_3.jitter, material_sampler, jitter_map);
-    metal::float3 _e16 = weft_main_light_direction(weft_frame);
-    metal::float3 _e17 = weft_main_light_radiance(weft_frame);
-    metal::float3 _e18 = weft_sh_irradiance(n_3, weft_frame);
-    float n_dot_l = metal::dot(n_3, _e16);
+    float _e18 = hair_jitter(in_3.uv0_, in_3.jitter.xy, in_3.jitter.w, material_sampler, jitter_map);
+    metal::float3 _e19 = weft_main_light_direction(weft_frame);
+    metal::float3 _e20 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e21 = weft_sh_irradiance(n_3, weft_frame);
+    float n_dot_l = metal::dot(n_3, _e19);
     {
-        metal::float3 _e23 = weft_safe_normalize(_e12 + (_e15 * n_3), _e12);
-        metal::float3 _e26 = weft_hair_sigma_a_scaled_k8_(in_3.fibre.w);
-        WeftHair _e27 = hair_from_varyings(in_3, _e26);
+        metal::float3 _e26 = weft_safe_normalize(_e12 + (_e18 * n_3), _e12);
+        metal::float3 _e29 = weft_hair_sigma_a_scaled_k8_(in_3.fibre.w);
+        WeftHair _e30 = hair_from_varyings(in_3, _e29);
         {
-            WeftHairLobes _e29 = weft_hair_fast(_e27, _e23, v_4, _e16);
-            lobes = _e29;
+            WeftHairLobes _e32 = weft_hair_fast(_e30, _e26, v_4, _e19);
+            lobes = _e32;
         }
         float body = metal::smoothstep(-0.25, HAIR_TERMINATOR, n_dot_l);
-        metal::float3 _e35 = lobes.back;
-        metal::float3 multiple = metal::float3(0.073238954, 0.019606648, 0.0059810597) * (metal::float3(1.0) - _e35);
-        metal::float3 _e39 = lobes.s;
-        metal::float3 direct = (_e39 * body) + (multiple * (WEFT_INV_PI * metal::saturate(n_dot_l)));
-        metal::float3 _e48 = lobes.back;
-        color = (direct * _e17) + (_e18 * (multiple + _e48));
+        metal::float3 _e38 = lobes.back;
+        metal::float3 multiple = metal::float3(0.073238954, 0.019606648, 0.0059810597) * (metal::float3(1.0) - _e38);
+        metal::float3 _e42 = lobes.s;
+        metal::float3 direct = (_e42 * body) + (multiple * (WEFT_INV_PI * metal::saturate(n_dot_l)));
+        metal::float3 _e51 = lobes.back;
+        color = (direct * _e20) + (_e21 * (multiple + _e51));
     }
-    metal::float3 _e52 = color;
-    metal::float3 radiance = metal::clamp(_e52, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e55 = color;
+    metal::float3 radiance = metal::clamp(_e55, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, 1.0) };
 }

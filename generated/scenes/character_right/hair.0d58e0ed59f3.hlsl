@@ -461,17 +461,17 @@ float2 weft_transform_uv_k4_(float2 uv)
     return (uv + float2(0.0, 0.0));
 }
 
-float hair_jitter(float2 uv0_1, float4 per_vertex)
+float hair_jitter(float2 uv0_1, float2 rotation, float noise_period)
 {
-    float c_1 = per_vertex.x;
-    float s_4 = per_vertex.y;
+    float c_1 = rotation.x;
+    float s_4 = rotation.y;
     float2 rotated = float2(((c_1 * uv0_1.x) + (s_4 * uv0_1.y)), ((-(s_4) * uv0_1.x) + (c_1 * uv0_1.y)));
-    const float2 _e17 = weft_transform_uv_k4_(uv0_1);
-    float4 _e20 = jitter_map.Sample(material_sampler, _e17);
-    float j = _e20.x;
-    float across = _e17.x;
-    const float _e27 = hair_value_noise((across * 128.0), per_vertex.w);
-    return (j + (0.2 * _e27));
+    const float2 _e18 = weft_transform_uv_k4_(uv0_1);
+    float4 _e21 = jitter_map.Sample(material_sampler, _e18);
+    float j = _e21.x;
+    float across = _e18.x;
+    const float _e26 = hair_value_noise((across * 128.0), noise_period);
+    return (j + (0.2 * _e26));
 }
 
 WeftHair weft_hair_params_k5_()
@@ -650,28 +650,28 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 n_3 = _e6.n;
     const float3x3 _e10 = weft_tangent_frame(n_3, in_3.world_tangent);
     const float3 _e12 = hair_strand(_e10, in_3.uv0_);
-    const float _e15 = hair_jitter(in_3.uv0_, in_3.jitter);
-    const float3 _e16 = weft_main_light_direction();
-    const float3 _e17 = weft_main_light_radiance();
-    const float3 _e18 = weft_sh_irradiance(n_3);
-    float n_dot_l = dot(n_3, _e16);
+    const float _e18 = hair_jitter(in_3.uv0_, in_3.jitter.xy, in_3.jitter.w);
+    const float3 _e19 = weft_main_light_direction();
+    const float3 _e20 = weft_main_light_radiance();
+    const float3 _e21 = weft_sh_irradiance(n_3);
+    float n_dot_l = dot(n_3, _e19);
     {
-        const float3 _e23 = weft_safe_normalize((_e12 + (_e15 * n_3)), _e12);
-        const float3 _e26 = weft_hair_sigma_a_scaled_k8_(in_3.fibre.w);
-        const WeftHair _e27 = hair_from_varyings(in_3, _e26);
+        const float3 _e26 = weft_safe_normalize((_e12 + (_e18 * n_3)), _e12);
+        const float3 _e29 = weft_hair_sigma_a_scaled_k8_(in_3.fibre.w);
+        const WeftHair _e30 = hair_from_varyings(in_3, _e29);
         {
-            const WeftHairLobes _e29 = weft_hair_fast(_e27, _e23, v_4, _e16);
-            lobes = _e29;
+            const WeftHairLobes _e32 = weft_hair_fast(_e30, _e26, v_4, _e19);
+            lobes = _e32;
         }
         float body = smoothstep(-0.25, HAIR_TERMINATOR, n_dot_l);
-        float3 _e35 = lobes.back;
-        float3 multiple = (float3(0.073238954, 0.019606648, 0.0059810597) * ((1.0).xxx - _e35));
-        float3 _e39 = lobes.s;
-        float3 direct = ((_e39 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
-        float3 _e48 = lobes.back;
-        color = ((direct * _e17) + (_e18 * (multiple + _e48)));
+        float3 _e38 = lobes.back;
+        float3 multiple = (float3(0.073238954, 0.019606648, 0.0059810597) * ((1.0).xxx - _e38));
+        float3 _e42 = lobes.s;
+        float3 direct = ((_e42 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
+        float3 _e51 = lobes.back;
+        color = ((direct * _e20) + (_e21 * (multiple + _e51)));
     }
-    float3 _e52 = color;
-    float3 radiance = clamp(_e52, (0.0).xxx, (65504.0).xxx);
+    float3 _e55 = color;
+    float3 radiance = clamp(_e55, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, 1.0);
 }
