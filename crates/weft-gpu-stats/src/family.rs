@@ -7,22 +7,27 @@
 //! so the parent tries the spellings in order (see [`crate::worker::run_child`])
 //! and the figures keep weft's name on every Mesa.
 
+/// Families RADV has named differently across Mesa releases: weft's name
+/// (the oldest spelling) and every `RADV_FORCE_FAMILY` spelling, oldest first.
+const RENAMED: &[(&str, &[&str])] = &[("gfx1100", &["gfx1100", "navi31"])];
+
 /// The `RADV_FORCE_FAMILY` values that select `family`, older Mesa first. A
 /// family weft does not rename is its own only spelling.
 pub fn radv_spellings(family: &str) -> Vec<&str> {
-    match family {
-        "gfx1100" | "navi31" => vec!["gfx1100", "navi31"],
-        other => vec![other],
-    }
+    renamed(family).map_or_else(|| vec![family], |(_, all)| all.to_vec())
 }
 
 /// weft's name of the family RADV calls `family`: `navi31` is `gfx1100`;
 /// every other name is weft's as it is.
 pub fn weft_name(family: &str) -> &str {
-    match family {
-        "navi31" => "gfx1100",
-        other => other,
-    }
+    renamed(family).map_or(family, |(weft, _)| weft)
+}
+
+fn renamed(family: &str) -> Option<(&'static str, &'static [&'static str])> {
+    RENAMED
+        .iter()
+        .find(|(_, all)| all.contains(&family))
+        .copied()
 }
 
 /// Whether a worker's messages say that RADV does not know the family name it

@@ -50,11 +50,12 @@ pub fn run_child(worker: &WorkerCommand, icd: &Path, request: &Request) -> Resul
     }
     Err(Error::Worker(format!(
         "this Mesa's RADV knows the GPU family {} under none of its names ({}): {}. \
-         Update `{}`, or ask for a family this Mesa has",
+         Update `{}`, or ask for a family this Mesa has (weft's defaults: {})",
         request.family,
         spellings.join(", "),
         unknown.join("; "),
         crate::RADV_PACKAGE,
+        crate::DEFAULT_FAMILIES.join(", "),
     )))
 }
 

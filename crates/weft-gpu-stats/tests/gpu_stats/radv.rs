@@ -49,10 +49,8 @@ fn other_compiler(family: &str) -> String {
     let Some(fresh) = full().iter().find(|f| f.family == family) else {
         return String::new();
     };
-    let committed = ModelSummary::load(&generated().join("reports"))
-        .ok()
-        .and_then(|m| m.families.into_iter().find(|f| f.family == family));
-    match committed {
+    let committed = ModelSummary::load(&generated().join("reports")).ok();
+    match committed.as_ref().and_then(|m| m.family(family)) {
         Some(c) if c.driver_info != fresh.driver_info => format!(
             " [these figures were measured with {} (generated/reports/gpu-model.json); this \
              machine's RADV is {}: another compiler version moves them, docs/performance.md \
