@@ -185,14 +185,30 @@ pub(crate) fn write_tier_tables(
 /// Replaces the text between `<!-- weft:<name>:… -->` in `path` (a file
 /// without the markers, or missing, is left alone).
 pub(crate) fn update_marked(path: &Path, name: &str, content: &str) -> Result<(), String> {
+    update_all_marked(path, &[(name.to_owned(), content.to_owned())])
+}
+
+/// [`update_marked`] for several marked tables of one file: read once,
+/// written once (if anything changed).
+fn update_all_marked(path: &Path, tables: &[(String, String)]) -> Result<(), String> {
     let Ok(text) = std::fs::read_to_string(path) else {
         return Ok(());
     };
-    if let Some(new) = weft_golden::shading::replace_marked(&text, name, content)
-        && new != text
-    {
+    let mut new = text.clone();
+    let mut updated = Vec::new();
+    for (name, content) in tables {
+        if let Some(replaced) = weft_golden::shading::replace_marked(&new, name, content)
+            && replaced != new
+        {
+            new = replaced;
+            updated.push(name.as_str());
+        }
+    }
+    if new != text {
         std::fs::write(path, new).map_err(|e| format!("{}: {e}", path.display()))?;
-        println!("updated the `{name}` table in {}", path.display());
+        for name in updated {
+            println!("updated the `{name}` table in {}", path.display());
+        }
     }
     Ok(())
 }
@@ -205,7 +221,7 @@ pub(crate) fn rewrite_cost_tables(root: &Path) -> Result<(), String> {
     let reports = root.join("generated/reports");
     let model = weft_meta::gpu_model::ModelSummary::load(&reports)?;
     let mut materials = Vec::new();
-    let gallery = root.join("generated/gallery.md");
+    let mut gallery_tables = Vec::new();
     for (_, meta) in weft_golden::materials(&root.join("generated"))? {
         let path = reports.join(format!("{}.measurements.json", meta.name));
         let Ok(bytes) = std::fs::read(&path) else {
@@ -216,13 +232,13 @@ pub(crate) fn rewrite_cost_tables(root: &Path) -> Result<(), String> {
         let svg = reports.join(format!("{}.pareto.svg", m.material));
         std::fs::write(&svg, weft_golden::pareto::pareto_svg(&m, Some(&model)))
             .map_err(|e| format!("{}: {e}", svg.display()))?;
-        update_marked(
-            &gallery,
-            &crate::gallery::gallery_marker(&m.material),
-            &weft_golden::cost_tables::gallery_table(&m, &meta.inputs_hash, Some(&model)),
-        )?;
+        gallery_tables.push((
+            crate::gallery::gallery_marker(&m.material),
+            weft_golden::cost_tables::gallery_table(&m, &meta.inputs_hash, Some(&model)),
+        ));
         materials.push(m);
     }
+    update_all_marked(&root.join("generated/gallery.md"), &gallery_tables)?;
     write_tier_tables(root, &materials)?;
     update_marked(
         &reports.join("shading.md"),

@@ -5,30 +5,23 @@
 //! Mesa 22.3 (Debian 12) calls RDNA3's first chip `gfx1100`; later releases
 //! call it `navi31`. Each RADV aborts on the other's name ("radv: Unknown family"),
 //! so the parent tries the spellings in order (see [`crate::worker::run_child`])
-//! and the figures keep weft's name on every Mesa.
+//! and the figures keep weft's name on every Mesa. The table of spellings is
+//! `weft_meta::scene::GPU_FAMILY_SPELLINGS`, which scene files read too.
 
-/// Families RADV has named differently across Mesa releases: weft's name
-/// (the oldest spelling) and every `RADV_FORCE_FAMILY` spelling, oldest first.
-const RENAMED: &[(&str, &[&str])] = &[("gfx1100", &["gfx1100", "navi31"])];
+use weft_meta::scene::GPU_FAMILY_SPELLINGS;
 
 /// The `RADV_FORCE_FAMILY` values that select `family`, older Mesa first. A
-/// family weft does not rename is its own only spelling.
+/// family Mesa never renamed is its own only spelling.
 pub fn radv_spellings(family: &str) -> Vec<&str> {
-    renamed(family).map_or_else(|| vec![family], |(_, all)| all.to_vec())
+    GPU_FAMILY_SPELLINGS
+        .iter()
+        .find(|(_, all)| all.contains(&family))
+        .map_or_else(|| vec![family], |(_, all)| all.to_vec())
 }
 
 /// weft's name of the family RADV calls `family`: `navi31` is `gfx1100`;
 /// every other name is weft's as it is.
-pub fn weft_name(family: &str) -> &str {
-    renamed(family).map_or(family, |(weft, _)| weft)
-}
-
-fn renamed(family: &str) -> Option<(&'static str, &'static [&'static str])> {
-    RENAMED
-        .iter()
-        .find(|(_, all)| all.contains(&family))
-        .copied()
-}
+pub use weft_meta::scene::weft_gpu_family as weft_name;
 
 /// Whether a worker's messages say that RADV does not know the family name it
 /// was given (its null winsys prints this, then aborts).

@@ -52,6 +52,21 @@ pub const GPU_COST_FAMILIES: &[&str] = &["navi21", "gfx1100"];
 /// The family used when a scene names none (RDNA2).
 pub const DEFAULT_GPU_COST_FAMILY: &str = "navi21";
 
+/// Families Mesa's RADV has named differently across releases: weft's name
+/// (the oldest spelling, the one reports and scene metadata use) and every
+/// `RADV_FORCE_FAMILY` spelling, oldest first. Mesa 22.3 (Debian 12) calls
+/// RDNA3's first chip `gfx1100`; later releases call it `navi31`.
+pub const GPU_FAMILY_SPELLINGS: &[(&str, &[&str])] = &[("gfx1100", &["gfx1100", "navi31"])];
+
+/// weft's name of the family some Mesa calls `family` (`navi31` is
+/// `gfx1100`); every other name is weft's as it is.
+pub fn weft_gpu_family(family: &str) -> &str {
+    GPU_FAMILY_SPELLINGS
+        .iter()
+        .find(|(_, all)| all.contains(&family))
+        .map_or(family, |(weft, _)| weft)
+}
+
 /// Everything an engine needs to draw one scene built by `weft build --scene`: the content of
 /// `<scene>.scene.json`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]

@@ -135,15 +135,24 @@ pub fn file_scene_name(path: &Path) -> String {
 }
 
 /// `gpu_family`: the GPU family whose modelled cost `tier = "auto"` uses
-/// (one of [`weft_meta::scene::GPU_COST_FAMILIES`]; default RDNA2).
+/// (one of [`weft_meta::scene::GPU_COST_FAMILIES`]; default RDNA2). A name
+/// another Mesa release gives the family (`navi31`) is read as weft's
+/// (`gfx1100`), so the scene's metadata is the same whichever a user wrote.
 fn parse_gpu_family(scene: &Table, cx: &mut Cx) -> String {
-    use weft_meta::scene::{DEFAULT_GPU_COST_FAMILY, GPU_COST_FAMILIES};
+    use weft_meta::scene::{
+        DEFAULT_GPU_COST_FAMILY, GPU_COST_FAMILIES, GPU_FAMILY_SPELLINGS, weft_gpu_family,
+    };
     let Some(family) = scene.string("gpu_family", cx) else {
         return DEFAULT_GPU_COST_FAMILY.into();
     };
-    if GPU_COST_FAMILIES.contains(&family.as_str()) {
-        return family;
+    let weft_name = weft_gpu_family(&family);
+    if GPU_COST_FAMILIES.contains(&weft_name) {
+        return weft_name.to_owned();
     }
+    let other_spellings: Vec<String> = GPU_FAMILY_SPELLINGS
+        .iter()
+        .map(|(weft, all)| format!("`{weft}` is also {}", all[1..].join(", ")))
+        .collect();
     cx.error_with_note(
         "unknown-value",
         format!("unknown `gpu_family` `{family}`"),
@@ -151,8 +160,9 @@ fn parse_gpu_family(scene: &Table, cx: &mut Cx) -> String {
         "not a modelled family",
         format!(
             "`tier = \"auto\"` costs tiers with AMD's compiler for one of: {} (default \
-             `{DEFAULT_GPU_COST_FAMILY}`; RDNA3 is `gfx1100`, which Mesa after 22.3 calls `navi31`)",
-            GPU_COST_FAMILIES.join(", ")
+             `{DEFAULT_GPU_COST_FAMILY}`: RDNA2; `gfx1100`: RDNA3; later Mesa's names: {})",
+            GPU_COST_FAMILIES.join(", "),
+            other_spellings.join("; ")
         ),
     );
     DEFAULT_GPU_COST_FAMILY.into()

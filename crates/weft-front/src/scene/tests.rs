@@ -498,9 +498,13 @@ fn gpu_family_defaults_to_rdna2_and_must_be_modelled() {
     };
     let (_dir, path) = write_fixture(&with("gfx1100"));
     assert_eq!(load(&path).unwrap().manifest.gpu_family, "gfx1100");
+    // Later Mesa's name for RDNA3 is read as weft's.
     let (_dir, path) = write_fixture(&with("navi31"));
+    assert_eq!(load(&path).unwrap().manifest.gpu_family, "gfx1100");
+    let (_dir, path) = write_fixture(&with("navi24"));
     let e = load(&path).expect_err("not a modelled family");
-    assert!(e.contains("unknown `gpu_family` `navi31`"), "{e}");
+    assert!(e.contains("unknown `gpu_family` `navi24`"), "{e}");
     assert!(e.contains("navi21, gfx1100"), "{e}");
+    assert!(e.contains("`gfx1100` is also navi31"), "{e}");
     assert!(e.contains("t.scene.toml:4:14"), "{e}");
 }
