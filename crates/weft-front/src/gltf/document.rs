@@ -125,11 +125,8 @@ impl GltfFile {
         let root: json::Root = serde_json::from_slice(&json_bytes).map_err(|e| {
             err(
                 "",
-                format!(
-                    "not glTF 2.0 JSON: {e} (line {}, column {})",
-                    e.line(),
-                    e.column()
-                ),
+                // serde_json's message already ends "at line L column C".
+                format!("not glTF 2.0 JSON: {e}"),
                 "weft reads glTF 2.0 (.gltf JSON or .glb binary)",
             )
         })?;
@@ -172,10 +169,15 @@ fn glb_chunks(bytes: &[u8]) -> Result<(&[u8], Option<&[u8]>), String> {
         return Err(format!("GLB version {version}; weft reads 2"));
     }
     let length = u32_at(8).ok_or("a truncated header")?;
-    if length > bytes.len() || length < 20 {
+    if length > bytes.len() {
         return Err(format!(
-            "the header's length {length} does not match the file's {} bytes",
+            "the header says {length} bytes but the file has {}",
             bytes.len()
+        ));
+    }
+    if length < 20 {
+        return Err(format!(
+            "the header says {length} bytes, too few for the 12-byte header and a chunk's 8-byte header"
         ));
     }
     let body = &bytes[..length];
@@ -213,6 +215,18 @@ fn validate(root: &json::Root, path: &Path) -> Result<(), GltfError> {
     for (m, mesh) in root.meshes.iter().enumerate() {
         for (p, prim) in mesh.primitives.iter().enumerate() {
             for (semantic, index) in &prim.attributes {
+                // gltf-json keeps no name for a key it cannot read, so the
+                // pointer is the attributes object.
+                if *semantic == json::validation::Checked::Invalid {
+                    return Err(GltfError::new(
+                        path,
+                        &format!("/meshes/{m}/primitives/{p}/attributes"),
+                        "invalid glTF: an attribute name that is not a glTF 2.0 semantic".into(),
+                        "attribute names are POSITION, NORMAL, TANGENT, TEXCOORD_n, COLOR_n, \
+                         JOINTS_n and WEIGHTS_n (n a decimal number), or start with `_` \
+                         (an application's own); re-export the file",
+                    ));
+                }
                 if index.value() >= root.accessors.len() {
                     let name = match semantic {
                         json::validation::Checked::Valid(s) => s.to_string(),
@@ -235,8 +249,9 @@ fn validate(root: &json::Root, path: &Path) -> Result<(), GltfError> {
     let mut first: Option<(String, String)> = None;
     let checked = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
         root.validate(root, json::Path::new, &mut |p, e| {
-            if first.is_none() {
-                first = Some((json_pointer(p().as_str()), e.to_string()));
+            let pointer = json_pointer(p().as_str());
+            if first.is_none() && !optional_in_gltf_2(&pointer, &e) {
+                first = Some((pointer, e.to_string()));
             }
         })
     }));
@@ -257,6 +272,23 @@ fn validate(root: &json::Root, path: &Path) -> Result<(), GltfError> {
             "the file breaks the glTF 2.0 schema; re-export it or run the Khronos glTF validator",
         )),
     }
+}
+
+/// Whether gltf-json 1.4 reports as missing a field glTF 2.0 leaves optional.
+/// An accessor without `bufferView` (and without `sparse`) is all zeros
+/// (§ 3.6.2.1), and a texture without `source` takes its image from an
+/// extension (§ 5.29). weft checks both where it reads them, with their own
+/// errors (`meshes::check_accessor`, `scene::images::gltf_texture`), so a file
+/// whose drawn primitives and materials do not use them opens.
+fn optional_in_gltf_2(pointer: &str, error: &json::validation::Error) -> bool {
+    if *error != json::validation::Error::Missing {
+        return false;
+    }
+    let parts: Vec<&str> = pointer.split('/').collect();
+    matches!(
+        parts.as_slice(),
+        ["", "accessors", _, "bufferView"] | ["", "textures", _, "source"]
+    )
 }
 
 /// Where an extension is used in the file, for the error's pointer: the
@@ -481,6 +513,76 @@ mod tests {
             "/meshes/0/primitives/2/attributes/POSITION"
         );
         assert_eq!(json_pointer("asset"), "/asset");
+    }
+
+    /// A one-triangle file with an accessor without `bufferView` and a
+    /// texture without `source` that nothing draws: valid glTF 2.0, so it
+    /// opens.
+    #[test]
+    fn fields_gltf_2_leaves_optional_are_checked_where_read_not_up_front() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("t.gltf");
+        // Three positions, as base64 of 9 little-endian f32.
+        let data: Vec<u8> = [0f32, 0., 0., 1., 0., 0., 0., 1., 0.]
+            .iter()
+            .flat_map(|f| f.to_le_bytes())
+            .collect();
+        let uri = format!(
+            "data:application/octet-stream;base64,{}",
+            base64::Engine::encode(&base64::engine::general_purpose::STANDARD, &data)
+        );
+        let text = serde_json::json!({
+            "asset": { "version": "2.0" },
+            "scene": 0, "scenes": [ { "nodes": [0] } ], "nodes": [ { "mesh": 0 } ],
+            "meshes": [ { "primitives": [ { "attributes": { "POSITION": 0 } } ] } ],
+            "buffers": [ { "byteLength": 36, "uri": uri } ],
+            "bufferViews": [ { "buffer": 0, "byteLength": 36 } ],
+            "accessors": [
+                { "bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                  "min": [0, 0, 0], "max": [1, 1, 0] },
+                { "componentType": 5126, "count": 3, "type": "VEC3" }
+            ],
+            "textures": [ {} ]
+        });
+        std::fs::write(&path, serde_json::to_vec(&text).unwrap()).unwrap();
+        let mut warnings = Warnings::default();
+        if let Err(e) = GltfFile::open(&path, &mut warnings) {
+            panic!("{e}");
+        }
+        // Not optional: a texture's `sampler` out of range.
+        let mut bad = text.clone();
+        bad["textures"] = serde_json::json!([ { "sampler": 4 } ]);
+        std::fs::write(&path, serde_json::to_vec(&bad).unwrap()).unwrap();
+        let e = GltfFile::open(&path, &mut warnings)
+            .err()
+            .unwrap()
+            .to_string();
+        assert!(e.contains("at /textures/0/sampler"), "{e}");
+    }
+
+    #[test]
+    fn glb_lengths_are_described_as_they_are() {
+        let header = |length: u32| {
+            let mut b = b"glTF".to_vec();
+            b.extend(2u32.to_le_bytes());
+            b.extend(length.to_le_bytes());
+            b
+        };
+        assert_eq!(
+            glb_chunks(&header(12)).unwrap_err(),
+            "the header says 12 bytes, too few for the 12-byte header and a chunk's 8-byte header"
+        );
+        assert_eq!(
+            glb_chunks(&header(40)).unwrap_err(),
+            "the header says 40 bytes but the file has 12"
+        );
+        let mut truncated = header(24);
+        truncated.extend(100u32.to_le_bytes());
+        truncated.extend(b"JSON{}  ");
+        assert_eq!(
+            glb_chunks(&truncated).unwrap_err(),
+            "a chunk of 100 bytes runs past the file"
+        );
     }
 
     #[test]

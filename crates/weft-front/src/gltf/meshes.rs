@@ -117,8 +117,16 @@ fn check_accessor(
     };
     match accessor.view() {
         Some(view) => fits(view, accessor.offset(), count, size)?,
+        // glTF reads such an accessor as zeros (§ 3.6.2.1): a placeholder
+        // no exporter writes for data it means to be drawn.
         None if accessor.sparse().is_none() => {
-            return Err(err(format!("{what}: no bufferView and no sparse values")));
+            return Err(file.error(
+                &pointer,
+                format!(
+                    "{what}: no bufferView and no sparse values, so glTF reads every element as zero"
+                ),
+                "weft does not draw an attribute or index list of zeros; re-export the file with the mesh's data",
+            ));
         }
         None => {}
     }

@@ -205,6 +205,25 @@ pub fn hostile() -> Vec<(&'static str, Vec<u8>, &'static str, &'static str)> {
         "invalid glTF",
     );
     case(
+        "attribute_not_a_semantic",
+        &|v| {
+            v["meshes"][0]["primitives"][0]["attributes"]["UVS"] = json!(0);
+        },
+        "/meshes/0/primitives/0/attributes",
+        "not a glTF 2.0 semantic",
+    );
+    case(
+        "positions_all_zero",
+        &|v| {
+            v["accessors"][0]
+                .as_object_mut()
+                .expect("accessor")
+                .remove("bufferView");
+        },
+        "/accessors/0",
+        "every element as zero",
+    );
+    case(
         "positions_as_bytes",
         &|v| {
             v["accessors"][0]["componentType"] = json!(5121);
