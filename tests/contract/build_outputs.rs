@@ -471,6 +471,22 @@ fn metadata_matches_the_emitted_modules() {
     assert_eq!(scene_shaders, expected, "every scene shader checked");
 }
 
+/// A glTF primitive's `COLOR_0` is dropped with a warning that says weft's
+/// materials read no vertex colours (`gltf::scene::vertex_colour_warnings`):
+/// true while no library variant takes the `color` stream.
+#[test]
+fn no_library_material_reads_vertex_colours() {
+    for s in all_shaders().iter().filter(|s| s.material.is_some()) {
+        assert!(
+            s.shader.vertex_inputs.iter().all(|v| v.name != "color"),
+            "{} reads vertex colours: glTF's COLOR_0 can now reach it, so \
+             `vertex_colour_warnings` in crates/weft-front/src/gltf/scene.rs must \
+             stop dropping it for this material",
+            s.file(&s.shader.files["wgsl"][0].path)
+        );
+    }
+}
+
 /// Materials and scenes (scenes on a rayon pool of the same size).
 #[test]
 fn output_is_identical_across_runs_and_thread_counts() {

@@ -794,3 +794,52 @@ fn an_instance_sampler_applies_where_a_map_is_read_and_warns_elsewhere() {
     );
     assert!(!text.contains("instance `mapped`"), "{text}");
 }
+
+/// A primitive with vertex colours: glTF multiplies them into the base
+/// colour, weft's materials read none, so the build says it drops them
+/// (once per primitive, however many nodes draw it) and still builds.
+#[test]
+fn vertex_colours_are_dropped_with_a_warning() {
+    let dir = tempfile::tempdir().unwrap();
+    // Three positions, then three RGB colours, as little-endian f32.
+    let floats: [f32; 18] = [
+        0., 0., 0., 1., 0., 0., 0., 1., 0., 1., 0., 0., 0., 1., 0., 0., 0., 1.,
+    ];
+    let data: Vec<u8> = floats.iter().flat_map(|f| f.to_le_bytes()).collect();
+    use base64::Engine as _;
+    let uri = format!(
+        "data:application/octet-stream;base64,{}",
+        base64::engine::general_purpose::STANDARD.encode(&data)
+    );
+    let gltf = serde_json::json!({
+        "asset": { "version": "2.0" },
+        "scene": 0, "scenes": [ { "nodes": [0, 1] } ],
+        "nodes": [ { "mesh": 0 }, { "mesh": 0, "translation": [2, 0, 0] } ],
+        "meshes": [ { "primitives": [ { "attributes": { "POSITION": 0, "COLOR_0": 1 } } ] } ],
+        "buffers": [ { "byteLength": 72, "uri": uri } ],
+        "bufferViews": [ { "buffer": 0, "byteLength": 72 } ],
+        "accessors": [
+            { "bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+              "min": [0, 0, 0], "max": [1, 1, 0] },
+            { "bufferView": 0, "byteOffset": 36, "componentType": 5126, "count": 3, "type": "VEC3" }
+        ]
+    });
+    let path = dir.path().join("coloured.gltf");
+    std::fs::write(&path, serde_json::to_vec(&gltf).unwrap()).unwrap();
+    let materials = repo().join("materials");
+    let options = SceneBuildOptions {
+        gltf_materials: Some(&materials),
+        ..SceneBuildOptions::default()
+    };
+    let out = build_scene(&path, &options)
+        .unwrap_or_else(|(db, diags)| panic!("{}", diags.render_plain(&db)));
+    assert_eq!(out.metadata.instances.len(), 2);
+    let (db, warnings) = out.warnings.as_ref().expect("a warning");
+    let text = warnings.render_plain(db);
+    assert_eq!(
+        text.matches("/meshes/0/primitives/0: drops COLOR_0")
+            .count(),
+        1,
+        "{text}"
+    );
+}

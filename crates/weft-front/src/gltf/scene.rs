@@ -466,6 +466,7 @@ pub fn scene_manifest(
         };
         instance_table(&mut instances, file, &instance, &view, &relative);
     }
+    vertex_colour_warnings(file, &draws, warnings);
     Ok(GltfScene {
         scene: header,
         camera,
@@ -475,6 +476,30 @@ pub fn scene_manifest(
         materials_used: used.len(),
         mappings,
     })
+}
+
+/// glTF multiplies `COLOR_0` into the base colour, and no material of
+/// weft's library reads the vertex colour stream (the test
+/// `no_library_material_reads_vertex_colours` holds this): each drawn
+/// primitive that has one is said to draw without it, once.
+fn vertex_colour_warnings(file: &GltfFile, draws: &[Draw], warnings: &mut Warnings) {
+    let mut seen = std::collections::BTreeSet::new();
+    for d in draws {
+        let has_colours = file
+            .document
+            .meshes()
+            .nth(d.mesh)
+            .and_then(|m| m.primitives().nth(d.primitive))
+            .is_some_and(|p| p.get(&gltf::Semantic::Colors(0)).is_some());
+        if has_colours && seen.insert((d.mesh, d.primitive)) {
+            warnings.push(format!(
+                "{}: /meshes/{}/primitives/{}: drops COLOR_0 (vertex colours, which glTF multiplies into the base colour; weft's materials read none): bake them into baseColorTexture",
+                super::shown(&file.path),
+                d.mesh,
+                d.primitive
+            ));
+        }
+    }
 }
 
 /// Each material the draws use once, in first-use order, mapped (docs/gltf.md)
