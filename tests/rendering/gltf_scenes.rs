@@ -843,3 +843,95 @@ fn vertex_colours_are_dropped_with_a_warning() {
         "{text}"
     );
 }
+
+/// A sphere written with float attributes and under KHR_mesh_quantization
+/// (gltfpack's encoding: u16 positions dequantised by the node, i8 normals
+/// and tangents, u16 texture coordinates) builds into the same scene within
+/// the quantisation's step: the same world positions, normals, tangents,
+/// texture coordinates and camera.
+#[test]
+fn quantized_meshes_build_as_their_float_originals() {
+    let dir = tempfile::tempdir().unwrap();
+    let materials = repo().join("materials");
+    let options = SceneBuildOptions {
+        gltf_materials: Some(&materials),
+        ..SceneBuildOptions::default()
+    };
+    let build = |name: &str, encoding: gltf_samples::Encoding| {
+        let path = dir.path().join(format!("{name}.glb"));
+        std::fs::write(&path, gltf_samples::quantized_sphere(encoding)).unwrap();
+        let out = build_scene(&path, &options)
+            .unwrap_or_else(|(db, diags)| panic!("{}", diags.render_plain(&db)));
+        let inst = &out.metadata.instances[0];
+        let file = out.metadata.meshes[&inst.mesh].file.clone().unwrap();
+        let mesh = MeshData::from_bytes(&out.files[&format!("{name}/{file}")]).unwrap();
+        let m = inst.transform.model;
+        let world: Vec<[f32; 3]> = mesh
+            .positions
+            .iter()
+            .map(|p| {
+                std::array::from_fn(|r| m[r] * p[0] + m[4 + r] * p[1] + m[8 + r] * p[2] + m[12 + r])
+            })
+            .collect();
+        (out.metadata.camera.clone(), mesh, world)
+    };
+    let (camera, float, float_world) = build("float", gltf_samples::Encoding::Float);
+    for encoding in [
+        gltf_samples::Encoding::Quantized,
+        gltf_samples::Encoding::QuantizedNormalized,
+    ] {
+        let (q_camera, quantized, q_world) =
+            build(&format!("{encoding:?}").to_lowercase(), encoding);
+        assert_same_sphere(
+            (&camera, &float, &float_world),
+            (&q_camera, &quantized, &q_world),
+        );
+    }
+}
+
+fn assert_same_sphere(
+    (camera, float, float_world): (&weft_meta::scene::SceneCamera, &MeshData, &[[f32; 3]]),
+    (q_camera, quantized, q_world): (&weft_meta::scene::SceneCamera, &MeshData, &[[f32; 3]]),
+) {
+    assert_eq!(float.indices, quantized.indices);
+    // The sphere has radius 1: a u16 step of its 2-unit extent is 3.1e-5
+    // (and f32 rounding of the normalised form's scale on top).
+    let step = 2.0 / 65535.0 + 2e-6;
+    let max_diff = |a: &[f32], b: &[f32]| {
+        a.iter()
+            .zip(b)
+            .map(|(x, y)| (x - y).abs())
+            .fold(0.0, f32::max)
+    };
+    for (a, b) in float_world.iter().zip(q_world) {
+        assert!(max_diff(a, b) <= step, "{a:?} vs {b:?}");
+    }
+    assert!(
+        (float_world[0][1] - q_world[0][1]).abs() <= step
+            && float_world
+                .iter()
+                .any(|p| (p[1] - gltf_samples::SPHERE_AT[1]).abs() > 0.5),
+        "both at the node's translation"
+    );
+    // i8 normals and tangents: within one step of 1/127 per component
+    // (normals are made unit length when read).
+    for (a, b) in float.normals.iter().zip(&quantized.normals) {
+        assert!(max_diff(a, b) <= 1.5 / 127.0, "{a:?} vs {b:?}");
+    }
+    for (a, b) in float.tangents.iter().zip(&quantized.tangents) {
+        assert!(max_diff(&a[..3], &b[..3]) <= 1.5 / 127.0, "{a:?} vs {b:?}");
+        assert_eq!(a[3], b[3], "bitangent sign");
+    }
+    for (a, b) in float.uv0.iter().zip(&quantized.uv0) {
+        assert!(max_diff(a, b) <= 0.5 / 65535.0 + 1e-7, "{a:?} vs {b:?}");
+    }
+    // The camera frames the same bounds (the quantised min/max are raw u16
+    // values; scaled by the node they are the float ones).
+    for k in 0..3 {
+        assert!(
+            (camera.position[k] - q_camera.position[k]).abs() < 1e-3
+                && (camera.target[k] - q_camera.target[k]).abs() < 1e-3,
+            "{camera:?} vs {q_camera:?}"
+        );
+    }
+}

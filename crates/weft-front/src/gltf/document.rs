@@ -27,6 +27,7 @@ pub const SUPPORTED_EXTENSIONS: &[&str] = &[
     "KHR_materials_specular",
     "KHR_materials_emissive_strength",
     "KHR_texture_transform",
+    super::accessors::MESH_QUANTIZATION,
 ];
 
 /// An opened glTF: the checked document and every buffer's bytes.
@@ -250,7 +251,7 @@ fn validate(root: &json::Root, path: &Path) -> Result<(), GltfError> {
     let checked = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
         root.validate(root, json::Path::new, &mut |p, e| {
             let pointer = json_pointer(p().as_str());
-            if first.is_none() && !optional_in_gltf_2(&pointer, &e) {
+            if first.is_none() && !weft_checks_itself(&pointer, &e) {
                 first = Some((pointer, e.to_string()));
             }
         })
@@ -274,20 +275,24 @@ fn validate(root: &json::Root, path: &Path) -> Result<(), GltfError> {
     }
 }
 
-/// Whether gltf-json 1.4 reports as missing a field glTF 2.0 leaves optional.
-/// An accessor without `bufferView` (and without `sparse`) is all zeros
-/// (§ 3.6.2.1), and a texture without `source` takes its image from an
-/// extension (§ 5.29). weft checks both where it reads them, with their own
-/// errors (`meshes::check_accessor`, `scene::images::gltf_texture`), so a file
-/// whose drawn primitives and materials do not use them opens.
-fn optional_in_gltf_2(pointer: &str, error: &json::validation::Error) -> bool {
-    if *error != json::validation::Error::Missing {
-        return false;
-    }
+/// Whether a gltf-json 1.4 schema error is one weft checks in its own way.
+/// - A field glTF 2.0 leaves optional, reported as missing: an accessor
+///   without `bufferView` (and without `sparse`) is all zeros (§ 3.6.2.1), and
+///   a texture without `source` takes its image from an extension (§ 5.29).
+///   weft checks both where it reads them, with their own errors
+///   (`meshes::check_accessor`, `scene::images::gltf_texture`), so a file
+///   whose drawn primitives and materials do not use them opens.
+/// - A required extension gltf-json does not know (`KHR_mesh_quantization`):
+///   [`check_extensions`] has already refused every one weft does not honour.
+fn weft_checks_itself(pointer: &str, error: &json::validation::Error) -> bool {
+    use json::validation::Error;
     let parts: Vec<&str> = pointer.split('/').collect();
     matches!(
-        parts.as_slice(),
-        ["", "accessors", _, "bufferView"] | ["", "textures", _, "source"]
+        (error, parts.as_slice()),
+        (
+            Error::Missing,
+            ["", "accessors", _, "bufferView"] | ["", "textures", _, "source"]
+        ) | (Error::Unsupported, ["", "extensionsRequired", _])
     )
 }
 

@@ -9,6 +9,7 @@
 //! panic or an allocation the file's own bytes do not back.
 
 use super::GltfError;
+use super::accessors;
 use super::document::GltfFile;
 use gltf::accessor::{DataType, Dimensions};
 use gltf::mesh::{Mode, Semantic};
@@ -42,12 +43,12 @@ fn element_size(data_type: DataType, dims: Dimensions) -> usize {
 
 /// Checks an accessor's bytes lie where the file says: a view inside its
 /// buffer, every element (stride apart) inside the view, sparse indices and
-/// values inside theirs. `allowed` lists the (component type, type) pairs
-/// the semantic may have.
+/// values inside theirs. `allowed` lists the (component type, type,
+/// `normalized`) the semantic may have.
 fn check_accessor(
     file: &GltfFile,
     accessor: &gltf::Accessor,
-    allowed: &[(DataType, Dimensions)],
+    allowed: &[Allowed],
     what: &str,
 ) -> Result<(), GltfError> {
     let pointer = format!("/accessors/{}", accessor.index());
@@ -59,11 +60,23 @@ fn check_accessor(
         )
     };
     let (data_type, dims) = (accessor.data_type(), accessor.dimensions());
-    if !allowed.contains(&(data_type, dims)) {
+    let normalized = accessor.normalized();
+    if !allowed
+        .iter()
+        .any(|a| a.0 == data_type && a.1 == dims && a.2.accepts(normalized))
+    {
+        let normalised = if normalized && data_type != DataType::F32 {
+            " normalised"
+        } else {
+            ""
+        };
         return Err(file.error(
             &pointer,
-            format!("{what}: a {dims:?} of {data_type:?}, which glTF does not allow here"),
-            "glTF 2.0 § 3.7.2.1 lists each attribute's accessor types",
+            format!(
+                "{what}: a {dims:?} of{normalised} {data_type:?}, which glTF does not allow here"
+            ),
+            "glTF 2.0 § 3.7.2.1 lists each attribute's accessor types; \
+             KHR_mesh_quantization (declared in extensionsUsed) adds integer ones",
         ));
     }
     let count = accessor.count();
@@ -152,6 +165,77 @@ fn check_accessor(
 
 const F32: DataType = DataType::F32;
 
+/// What an accessor's `normalized` may be for one component type.
+#[derive(Clone, Copy)]
+enum Norm {
+    /// Integers read as fractions (normalised colours, core texture coordinates).
+    Yes,
+    /// Integers read as their values (KHR_mesh_quantization's positions and
+    /// texture coordinates may be either).
+    Either,
+}
+
+impl Norm {
+    fn accepts(self, normalized: bool) -> bool {
+        match self {
+            Norm::Yes => normalized,
+            Norm::Either => true,
+        }
+    }
+}
+
+/// One accepted (component type, type, `normalized`). Floats and indices
+/// accept either flag: it does not change what they read.
+type Allowed = (DataType, Dimensions, Norm);
+
+/// The accessor types of each attribute weft reads: glTF 2.0 § 3.7.2.1, and
+/// with `KHR_mesh_quantization` its integer types as well.
+struct AttributeTypes {
+    position: Vec<Allowed>,
+    normal: Vec<Allowed>,
+    tangent: Vec<Allowed>,
+    tex_coord: Vec<Allowed>,
+    color: Vec<Allowed>,
+}
+
+impl AttributeTypes {
+    fn new(quantized: bool) -> AttributeTypes {
+        use DataType::{I8, I16, U8, U16};
+        use Dimensions::{Vec2, Vec3, Vec4};
+        let mut types = AttributeTypes {
+            position: vec![(F32, Vec3, Norm::Either)],
+            normal: vec![(F32, Vec3, Norm::Either)],
+            tangent: vec![(F32, Vec4, Norm::Either)],
+            tex_coord: vec![
+                (F32, Vec2, Norm::Either),
+                (U8, Vec2, Norm::Yes),
+                (U16, Vec2, Norm::Yes),
+            ],
+            color: [Vec3, Vec4]
+                .into_iter()
+                .flat_map(|d| {
+                    [
+                        (F32, d, Norm::Either),
+                        (U8, d, Norm::Yes),
+                        (U16, d, Norm::Yes),
+                    ]
+                })
+                .collect(),
+        };
+        if quantized {
+            for t in [I8, U8, I16, U16] {
+                types.position.push((t, Vec3, Norm::Either));
+                types.tex_coord.push((t, Vec2, Norm::Either));
+            }
+            for t in [I8, I16] {
+                types.normal.push((t, Vec3, Norm::Yes));
+                types.tangent.push((t, Vec4, Norm::Yes));
+            }
+        }
+        types
+    }
+}
+
 /// The mesh primitive `/meshes/<mesh>/primitives/<primitive>` as vertex streams.
 pub fn read_primitive(
     file: &GltfFile,
@@ -188,24 +272,25 @@ pub fn read_primitive(
 
 /// Which attributes the primitive has, each accessor checked (type, count,
 /// byte ranges) before anything is read.
-struct Attributes {
-    position: usize,
+struct Attributes<'a> {
+    position: gltf::Accessor<'a>,
     count: usize,
-    normal: bool,
-    tangent: bool,
-    uv0: bool,
-    uv1: bool,
+    normal: Option<gltf::Accessor<'a>>,
+    tangent: Option<gltf::Accessor<'a>>,
+    uv0: Option<gltf::Accessor<'a>>,
+    uv1: Option<gltf::Accessor<'a>>,
     color: bool,
 }
 
-impl Attributes {
+impl<'a> Attributes<'a> {
     fn checked(
         file: &GltfFile,
-        prim: &gltf::Primitive,
+        prim: &gltf::Primitive<'a>,
         pointer: &str,
-    ) -> Result<Attributes, GltfError> {
+    ) -> Result<Attributes<'a>, GltfError> {
+        let types = AttributeTypes::new(accessors::quantized(file));
         let get = |semantic: Semantic,
-                   allowed: &[(DataType, Dimensions)],
+                   allowed: &[Allowed],
                    what: &str|
          -> Result<Option<gltf::Accessor>, GltfError> {
             match prim.get(&semantic) {
@@ -216,33 +301,19 @@ impl Attributes {
                 }
             }
         };
-        let position = get(Semantic::Positions, &[(F32, Dimensions::Vec3)], "POSITION")?
-            .ok_or_else(|| {
-                file.error(
-                    &format!("{pointer}/attributes"),
-                    "the primitive has no POSITION".into(),
-                    "every drawn primitive needs positions",
-                )
-            })?;
+        let position = get(Semantic::Positions, &types.position, "POSITION")?.ok_or_else(|| {
+            file.error(
+                &format!("{pointer}/attributes"),
+                "the primitive has no POSITION".into(),
+                "every drawn primitive needs positions",
+            )
+        })?;
         let count = position.count();
-        let normal = get(Semantic::Normals, &[(F32, Dimensions::Vec3)], "NORMAL")?;
-        let tangent = get(Semantic::Tangents, &[(F32, Dimensions::Vec4)], "TANGENT")?;
-        let uv_types = [
-            (F32, Dimensions::Vec2),
-            (DataType::U8, Dimensions::Vec2),
-            (DataType::U16, Dimensions::Vec2),
-        ];
-        let uv0 = get(Semantic::TexCoords(0), &uv_types, "TEXCOORD_0")?;
-        let uv1 = get(Semantic::TexCoords(1), &uv_types, "TEXCOORD_1")?;
-        let color_types = [
-            (F32, Dimensions::Vec3),
-            (F32, Dimensions::Vec4),
-            (DataType::U8, Dimensions::Vec3),
-            (DataType::U8, Dimensions::Vec4),
-            (DataType::U16, Dimensions::Vec3),
-            (DataType::U16, Dimensions::Vec4),
-        ];
-        let color = get(Semantic::Colors(0), &color_types, "COLOR_0")?;
+        let normal = get(Semantic::Normals, &types.normal, "NORMAL")?;
+        let tangent = get(Semantic::Tangents, &types.tangent, "TANGENT")?;
+        let uv0 = get(Semantic::TexCoords(0), &types.tex_coord, "TEXCOORD_0")?;
+        let uv1 = get(Semantic::TexCoords(1), &types.tex_coord, "TEXCOORD_1")?;
+        let color = get(Semantic::Colors(0), &types.color, "COLOR_0")?;
         for (a, name) in [
             (&normal, "NORMAL"),
             (&tangent, "TANGENT"),
@@ -261,20 +332,17 @@ impl Attributes {
             }
         }
         if let Some(idx) = prim.indices() {
-            let types = [
-                (DataType::U8, Dimensions::Scalar),
-                (DataType::U16, Dimensions::Scalar),
-                (DataType::U32, Dimensions::Scalar),
-            ];
+            let types = [DataType::U8, DataType::U16, DataType::U32]
+                .map(|t| (t, Dimensions::Scalar, Norm::Either));
             check_accessor(file, &idx, &types, &format!("{pointer} indices"))?;
         }
         Ok(Attributes {
-            position: position.index(),
+            position,
             count,
-            normal: normal.is_some(),
-            tangent: tangent.is_some(),
-            uv0: uv0.is_some(),
-            uv1: uv1.is_some(),
+            normal,
+            tangent,
+            uv0,
+            uv1,
             color: color.is_some(),
         })
     }
@@ -298,15 +366,13 @@ fn read_streams(
         )
     };
     let mut data = MeshData {
-        positions: reader
-            .read_positions()
-            .ok_or_else(|| unreadable("POSITION"))?
-            .collect(),
+        positions: accessors::read_f32(file, &attributes.position)
+            .ok_or_else(|| unreadable("POSITION"))?,
         ..MeshData::default()
     };
     if data.positions.iter().flatten().any(|x| !x.is_finite()) {
         return Err(file.error(
-            &format!("/accessors/{}", attributes.position),
+            &format!("/accessors/{}", attributes.position.index()),
             "a position is not finite".into(),
             "re-export the file",
         ));
@@ -336,26 +402,18 @@ fn read_streams(
             "re-export the file",
         ));
     }
-    if attributes.normal {
-        data.normals = reader
-            .read_normals()
+    if let Some(normal) = &attributes.normal {
+        data.normals = accessors::read_f32(file, normal)
             .ok_or_else(|| unreadable("NORMAL"))?
+            .into_iter()
             .map(|n| unit_or(n, [0.0, 0.0, 1.0]))
             .collect();
     }
-    if attributes.uv0 {
-        data.uv0 = reader
-            .read_tex_coords(0)
-            .ok_or_else(|| unreadable("TEXCOORD_0"))?
-            .into_f32()
-            .collect();
+    if let Some(uv0) = &attributes.uv0 {
+        data.uv0 = accessors::read_f32(file, uv0).ok_or_else(|| unreadable("TEXCOORD_0"))?;
     }
-    if attributes.uv1 {
-        data.uv1 = reader
-            .read_tex_coords(1)
-            .ok_or_else(|| unreadable("TEXCOORD_1"))?
-            .into_f32()
-            .collect();
+    if let Some(uv1) = &attributes.uv1 {
+        data.uv1 = accessors::read_f32(file, uv1).ok_or_else(|| unreadable("TEXCOORD_1"))?;
     }
     if attributes.color {
         data.colors = reader
@@ -364,11 +422,11 @@ fn read_streams(
             .into_rgba_f32()
             .collect();
     }
-    if attributes.tangent && attributes.normal {
-        data.tangents = reader
-            .read_tangents()
+    if let (Some(tangent), Some(_)) = (&attributes.tangent, &attributes.normal) {
+        data.tangents = accessors::read_f32(file, tangent)
             .ok_or_else(|| unreadable("TANGENT"))?
-            .map(|t| {
+            .into_iter()
+            .map(|t: [f32; 4]| {
                 let [x, y, z] = unit_or([t[0], t[1], t[2]], [1.0, 0.0, 0.0]);
                 [x, y, z, if t[3] < 0.0 { -1.0 } else { 1.0 }]
             })
@@ -386,7 +444,7 @@ fn complete_streams(
     attributes: &Attributes,
 ) -> PrimitiveMesh {
     let mut generated = Vec::new();
-    if !attributes.normal {
+    if attributes.normal.is_none() {
         // A file's tangents without normals are dropped: MikkTSpace redoes them.
         generated.push("flat normals (the file has none)");
         data.positions = per_corner(&data.positions, &indices);
@@ -398,7 +456,7 @@ fn complete_streams(
         data.normals = flat_normals(&data.positions);
     }
     if data.tangents.is_empty() {
-        if attributes.uv0 {
+        if attributes.uv0.is_some() {
             generated.push("MikkTSpace tangents (the file has none)");
             data.tangents = mikktspace_tangents(&data, &indices);
         } else {
@@ -406,10 +464,10 @@ fn complete_streams(
         }
     }
     let provided = Provided {
-        uv0: attributes.uv0,
-        uv1: attributes.uv1,
+        uv0: attributes.uv0.is_some(),
+        uv1: attributes.uv1.is_some(),
         color: attributes.color,
-        tangent: attributes.tangent || attributes.uv0,
+        tangent: attributes.tangent.is_some() || attributes.uv0.is_some(),
     };
     let v = data.positions.len();
     if data.uv0.is_empty() {

@@ -6,12 +6,14 @@
 //! lights and [`materials`] mapped into scene manifest text) → the ordinary
 //! scene front end (`scene::parse`, `scene::resolve`), which reads each
 //! instance's `mesh = { gltf = …, mesh = …, primitive = … }` through
-//! [`meshes`] (accessors checked, normals and MikkTSpace tangents generated
-//! where the file has none).
+//! [`meshes`] (accessors checked and read as f32 by [`accessors`],
+//! `KHR_mesh_quantization`'s integer types included; normals and MikkTSpace
+//! tangents generated where the file has none).
 //!
 //! Every problem with the file is a [`GltfError`] naming the file and the
 //! JSON pointer of what is wrong, with a hint.
 
+pub mod accessors;
 pub mod document;
 pub mod materials;
 pub mod meshes;

@@ -243,13 +243,13 @@ fn bounds(file: &GltfFile, draws: &[Draw]) -> Option<([f64; 3], f64)> {
             .nth(d.mesh)?
             .primitives()
             .nth(d.primitive)?;
-        let bb = prim.bounding_box();
+        let (min, max) = super::accessors::position_bounds(&prim)?;
         for corner in 0..8 {
             let p = std::array::from_fn(|k| {
                 if corner >> k & 1 == 0 {
-                    bb.min[k] as f64
+                    min[k] as f64
                 } else {
-                    bb.max[k] as f64
+                    max[k] as f64
                 }
             });
             let w = transform_point(&d.world, p);

@@ -12,6 +12,8 @@
 //! - `tests/gltf/cutouts.glb`: alpha MASK with doubleSided, emission, BLEND,
 //!   a frame with all four core maps (PNG and JPEG, KHR_texture_transform),
 //!   a glTF sampler and a rotated texture transform.
+//! - [`quantized_sphere`]: one sphere with float attributes and under
+//!   `KHR_mesh_quantization`, made by the test that compares them.
 //! - [`hostile`]: files weft must refuse, each with the JSON pointer the
 //!   error names (tests/rendering/gltf_scenes.rs).
 //!
@@ -19,10 +21,12 @@
 //! them equal to this generator.
 
 mod hostile;
+mod quantized;
 mod scenes;
 mod textures;
 
 pub use hostile::hostile;
+pub use quantized::{Encoding, SPHERE_AT, quantized_sphere};
 pub use scenes::{bust, cutouts, showroom};
 pub use textures::{png_rgba, wood_base_color, wood_metallic_roughness};
 
