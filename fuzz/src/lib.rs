@@ -185,7 +185,18 @@ pub fn gltf(data: &[u8]) -> String {
             }
             for (m, mesh) in file.document.meshes().enumerate().take(16) {
                 for p in 0..mesh.primitives().count().min(16) {
-                    if let Err(e) = meshes::read_primitive(&file, m, p) {
+                    if let Err(e) = meshes::read_primitive(&file, m, p, None) {
+                        out.push_str(&format!("{e}\n"));
+                    }
+                }
+            }
+            // And as each node that draws a mesh poses it (skin, weights).
+            for node in file.document.nodes().take(16) {
+                let Some(mesh) = node.mesh() else { continue };
+                for p in 0..mesh.primitives().count().min(16) {
+                    if let Err(e) =
+                        meshes::read_primitive(&file, mesh.index(), p, Some(node.index()))
+                    {
                         out.push_str(&format!("{e}\n"));
                     }
                 }

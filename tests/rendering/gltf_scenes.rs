@@ -935,3 +935,102 @@ fn assert_same_sphere(
         );
     }
 }
+
+/// Builds `bytes` as `<name>.glb` in `dir`: its metadata and each
+/// instance's mesh by instance name.
+fn build_glb(
+    dir: &Path,
+    name: &str,
+    bytes: Vec<u8>,
+) -> (SceneMetadata, std::collections::BTreeMap<String, MeshData>) {
+    let path = dir.join(format!("{name}.glb"));
+    std::fs::write(&path, bytes).unwrap();
+    let materials = repo().join("materials");
+    let options = SceneBuildOptions {
+        gltf_materials: Some(&materials),
+        ..SceneBuildOptions::default()
+    };
+    let out = build_scene(&path, &options)
+        .unwrap_or_else(|(db, diags)| panic!("{}", diags.render_plain(&db)));
+    let meshes = out
+        .metadata
+        .instances
+        .iter()
+        .map(|i| {
+            let file = out.metadata.meshes[&i.mesh].file.clone().unwrap();
+            let bytes = &out.files[&format!("{name}/{file}")];
+            (i.name.clone(), MeshData::from_bytes(bytes).unwrap())
+        })
+        .collect();
+    (out.metadata, meshes)
+}
+
+/// A skinned mesh draws as glTF poses it: every vertex by its joints'
+/// matrices at the file's default transforms, in world space (the node's
+/// own translation ignored, the instance's matrix the identity). The pose
+/// is computed here from the sample's construction: the child joint turns
+/// 90° about +Z around (0, 1, 0).
+#[test]
+fn skinned_meshes_draw_in_the_files_default_pose() {
+    let dir = tempfile::tempdir().unwrap();
+    let (meta, meshes) = build_glb(dir.path(), "strip", gltf_samples::skinned_strip());
+    let strip = &meshes["strip"];
+    let model = meta.instances[0].transform.model;
+    let identity = [
+        1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0,
+    ];
+    assert_eq!(
+        model, identity,
+        "a skinned instance is already in world space"
+    );
+    // Child joint: p ↦ R(p − (0, 1, 0)) + (0, 1, 0), R(x, y) = (−y, x).
+    let bent = |[x, y, z]: [f32; 3]| [-(y - 1.0), x + 1.0, z];
+    let mut v = 0;
+    for (y, w) in gltf_samples::STRIP_ROWS {
+        for x in [-0.5f32, 0.5] {
+            let b = bent([x, y, 0.0]);
+            let want = [(1.0 - w) * x + w * b[0], (1.0 - w) * y + w * b[1], 0.0];
+            let got = strip.positions[v];
+            assert!(
+                (0..3).all(|k| (got[k] - want[k]).abs() < 1e-5),
+                "vertex {v}: {got:?}, want {want:?}"
+            );
+            // The tangent (1, 0, 0) turns by the blend of I and R: along
+            // (1 − w, w, 0); the normal (0, 0, 1) stays.
+            let t = strip.tangents[v];
+            let len = ((1.0 - w).powi(2) + w * w).sqrt();
+            let want_t = [(1.0 - w) / len, w / len, 0.0];
+            assert!(
+                (0..3).all(|k| (t[k] - want_t[k]).abs() < 1e-5) && t[3] == 1.0,
+                "tangent {v}: {t:?}, want {want_t:?}"
+            );
+            assert!((strip.normals[v][2] - 1.0).abs() < 1e-6, "normal {v}");
+            v += 1;
+        }
+    }
+}
+
+/// Morph targets blend with the node's weights, else the mesh's: one mesh
+/// drawn by two nodes is two posed meshes.
+#[test]
+fn morph_targets_blend_with_the_default_weights() {
+    let dir = tempfile::tempdir().unwrap();
+    let (_, meshes) = build_glb(dir.path(), "tri", gltf_samples::morphing_triangle());
+    let blend = |weights: [f32; 2]| -> Vec<[f32; 3]> {
+        (0..3)
+            .map(|v| {
+                std::array::from_fn(|k| {
+                    gltf_samples::MORPH_BASE[v][k]
+                        + weights[0] * gltf_samples::MORPH_TARGETS[0][v][k]
+                        + weights[1] * gltf_samples::MORPH_TARGETS[1][v][k]
+                })
+            })
+            .collect()
+    };
+    // Without normals each triangle corner is its own vertex (flat normals),
+    // in the order the triangle lists them.
+    for (instance, weights) in [("mesh_weights", [0.5, 0.5]), ("node_weights", [1.0, 0.0])] {
+        let got = &meshes[instance].positions;
+        assert_eq!(got, &blend(weights), "{instance}");
+    }
+}

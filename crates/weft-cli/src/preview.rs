@@ -242,7 +242,7 @@ fn gltf_mesh(spec: &str) -> Result<weft_render::Mesh, String> {
     };
     let mut cache = weft_front::gltf::GltfCache::default();
     let mesh = cache
-        .mesh(std::path::Path::new(file), index(m)?, index(p)?, None)
+        .mesh(std::path::Path::new(file), index(m)?, index(p)?, None, None)
         .map_err(|e| format!("{e}\n  = {}", e.hint))?;
     for w in &cache.warnings {
         eprintln!("warning: {w}");

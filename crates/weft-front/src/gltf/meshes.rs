@@ -11,6 +11,7 @@
 use super::GltfError;
 use super::accessors;
 use super::document::GltfFile;
+use super::pose;
 use gltf::accessor::{DataType, Dimensions};
 use gltf::mesh::{Mode, Semantic};
 use weft_meta::mesh::MeshData;
@@ -45,7 +46,7 @@ fn element_size(data_type: DataType, dims: Dimensions) -> usize {
 /// buffer, every element (stride apart) inside the view, sparse indices and
 /// values inside theirs. `allowed` lists the (component type, type,
 /// `normalized`) the semantic may have.
-fn check_accessor(
+pub(super) fn check_accessor(
     file: &GltfFile,
     accessor: &gltf::Accessor,
     allowed: &[Allowed],
@@ -167,7 +168,7 @@ const F32: DataType = DataType::F32;
 
 /// What an accessor's `normalized` may be for one component type.
 #[derive(Clone, Copy)]
-enum Norm {
+pub(super) enum Norm {
     /// Integers read as fractions (normalised colours, core texture coordinates).
     Yes,
     /// Integers read as their values (KHR_mesh_quantization's positions and
@@ -186,7 +187,7 @@ impl Norm {
 
 /// One accepted (component type, type, `normalized`). Floats and indices
 /// accept either flag: it does not change what they read.
-type Allowed = (DataType, Dimensions, Norm);
+pub(super) type Allowed = (DataType, Dimensions, Norm);
 
 /// The accessor types of each attribute weft reads: glTF 2.0 § 3.7.2.1, and
 /// with `KHR_mesh_quantization` its integer types as well.
@@ -236,17 +237,20 @@ impl AttributeTypes {
     }
 }
 
-/// The mesh primitive `/meshes/<mesh>/primitives/<primitive>` as vertex streams.
+/// The mesh primitive `/meshes/<mesh>/primitives/<primitive>` as vertex
+/// streams, posed as `node` draws it in the file's default state (its morph
+/// weights, its skin: [`pose`]); without a node, with the mesh's own
+/// default morph weights.
 pub fn read_primitive(
     file: &GltfFile,
     mesh: usize,
     primitive: usize,
+    node: Option<usize>,
 ) -> Result<PrimitiveMesh, GltfError> {
     let pointer = format!("/meshes/{mesh}/primitives/{primitive}");
-    let prim = file
-        .document
-        .meshes()
-        .nth(mesh)
+    let gltf_mesh = file.document.meshes().nth(mesh);
+    let prim = gltf_mesh
+        .as_ref()
         .and_then(|m| m.primitives().nth(primitive))
         .ok_or_else(|| {
             file.error(
@@ -266,7 +270,24 @@ pub fn read_primitive(
         ));
     }
     let attributes = Attributes::checked(file, &prim, &pointer)?;
-    let (data, indices) = read_streams(file, &prim, &attributes, &pointer)?;
+    let (mut data, indices) = read_streams(file, &prim, &attributes, &pointer)?;
+    let node = match node {
+        None => None,
+        Some(n) => Some(file.document.nodes().nth(n).ok_or_else(|| {
+            file.error(
+                "/nodes",
+                format!("the file has no node {n}"),
+                "count nodes from 0",
+            )
+        })?),
+    };
+    if let Some(m) = &gltf_mesh {
+        pose::morph(file, m, &prim, node.as_ref(), &mut data, &pointer)?;
+    }
+    if let Some(node) = node.as_ref().filter(|n| n.skin().is_some()) {
+        let worlds = super::transform::world_matrices(file);
+        pose::skin(file, &prim, node, &worlds, &mut data, &pointer)?;
+    }
     Ok(complete_streams(data, indices, &attributes))
 }
 

@@ -17,7 +17,9 @@ pub mod accessors;
 pub mod document;
 pub mod materials;
 pub mod meshes;
+pub mod pose;
 pub mod scene;
+pub mod transform;
 
 pub use document::GltfFile;
 pub use meshes::{PrimitiveMesh, Provided};
@@ -99,7 +101,7 @@ impl FileMesh {
 }
 
 /// A primitive read once per scene: file, mesh, primitive, uv transform (bits).
-type MeshKey = (PathBuf, usize, usize, Option<[u64; 6]>);
+type MeshKey = (PathBuf, usize, usize, Option<[u64; 6]>, Option<usize>);
 
 /// Eight hex digits naming a uv transform in a mesh's name (the first of
 /// the SHA-256 of its bits: stable on every machine).
@@ -154,6 +156,7 @@ impl GltfCache {
         mesh: usize,
         primitive: usize,
         uv_transform: Option<[f64; 6]>,
+        node: Option<usize>,
     ) -> Result<Arc<FileMesh>, GltfError> {
         let file = self.file(path)?;
         let key = (
@@ -163,11 +166,12 @@ impl GltfCache {
             mesh,
             primitive,
             uv_transform.map(|t| t.map(f64::to_bits)),
+            node,
         );
         if let Some(m) = self.meshes.get(&key) {
             return Ok(m.clone());
         }
-        let mut read = meshes::read_primitive(&file, mesh, primitive)?;
+        let mut read = meshes::read_primitive(&file, mesh, primitive, node)?;
         let stem = scene::snake_name(
             &path
                 .file_stem()
@@ -176,6 +180,9 @@ impl GltfCache {
             "gltf",
         );
         let mut name = format!("{stem}.mesh{mesh}.p{primitive}");
+        if let Some(n) = node {
+            name.push_str(&format!(".n{n}"));
+        }
         if let Some(t) = uv_transform {
             for uv in &mut read.data.uv0 {
                 let (u, v) = (f64::from(uv[0]), f64::from(uv[1]));

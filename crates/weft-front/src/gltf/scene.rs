@@ -9,34 +9,12 @@
 
 use super::document::GltfFile;
 use super::materials::{MaterialMapping, float, map_material, toml_string};
+use super::transform::{IDENTITY, Mat4, mul, normalize, transform_point};
 use super::{GltfError, Warnings};
 use crate::scene::parse::MAX_INSTANCES;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::Path;
-
-type Mat4 = [[f64; 4]; 4];
-
-fn mul(a: &Mat4, b: &Mat4) -> Mat4 {
-    // Column-major: (a b)[c][r] = Σ_k a[k][r] b[c][k].
-    std::array::from_fn(|c| std::array::from_fn(|r| (0..4).map(|k| a[k][r] * b[c][k]).sum()))
-}
-
-const IDENTITY: Mat4 = [
-    [1.0, 0.0, 0.0, 0.0],
-    [0.0, 1.0, 0.0, 0.0],
-    [0.0, 0.0, 1.0, 0.0],
-    [0.0, 0.0, 0.0, 1.0],
-];
-
-fn transform_point(m: &Mat4, p: [f64; 3]) -> [f64; 3] {
-    std::array::from_fn(|r| m[0][r] * p[0] + m[1][r] * p[1] + m[2][r] * p[2] + m[3][r])
-}
-
-fn normalize(v: [f64; 3]) -> Option<[f64; 3]> {
-    let len = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
-    (len.is_finite() && len > 1e-12).then(|| v.map(|x| x / len))
-}
 
 /// A lower_snake_case name from any glTF name (instance names).
 pub fn snake_name(raw: &str, fallback: &str) -> String {
@@ -64,6 +42,12 @@ struct Draw {
     primitive: usize,
     material: Option<usize>,
     world: Mat4,
+    /// The node that draws it, when its skin or morph weights pose the
+    /// mesh (`pose::node_poses`): the instance's mesh names it.
+    posing_node: Option<usize>,
+    /// A skinned draw: its vertices come out in world space (glTF ignores
+    /// the node's own transform), so the instance's matrix is the identity.
+    skinned: bool,
     /// For a `KHR_materials_variants` stand-in: (variant name, the
     /// instance it replaces is `name` without the suffix).
     variant: Option<String>,
@@ -214,12 +198,15 @@ fn drawn_primitives(file: &GltfFile) -> Result<(Vec<Draw>, Placed), GltfError> {
                 } else {
                     base.clone()
                 };
+                let skinned = node.skin().is_some();
                 draws.push(Draw {
                     name,
                     mesh: mesh.index(),
                     primitive: prim.index(),
                     material: prim.material().index(),
-                    world,
+                    world: if skinned { IDENTITY } else { world },
+                    posing_node: super::pose::node_poses(&node).then_some(i),
+                    skinned,
                     variant: None,
                 });
             }
@@ -236,7 +223,14 @@ fn drawn_primitives(file: &GltfFile) -> Result<(Vec<Draw>, Placed), GltfError> {
 fn bounds(file: &GltfFile, draws: &[Draw]) -> Option<([f64; 3], f64)> {
     let mut lo = [f64::INFINITY; 3];
     let mut hi = [f64::NEG_INFINITY; 3];
+    let worlds = super::transform::world_matrices(file);
     for d in draws {
+        // A skinned primitive's box through each joint's matrix: a bound of
+        // where skinning can put it (the mesh itself is posed later).
+        let frames = match d.posing_node.filter(|_| d.skinned) {
+            Some(n) => super::pose::joint_frames(file, n, &worlds),
+            None => vec![d.world],
+        };
         let prim = file
             .document
             .meshes()
@@ -252,10 +246,12 @@ fn bounds(file: &GltfFile, draws: &[Draw]) -> Option<([f64; 3], f64)> {
                     max[k] as f64
                 }
             });
-            let w = transform_point(&d.world, p);
-            for k in 0..3 {
-                lo[k] = lo[k].min(w[k]);
-                hi[k] = hi[k].max(w[k]);
+            for frame in &frames {
+                let w = transform_point(frame, p);
+                for k in 0..3 {
+                    lo[k] = lo[k].min(w[k]);
+                    hi[k] = hi[k].max(w[k]);
+                }
             }
         }
     }
@@ -666,9 +662,12 @@ fn instance_table(
         let t: Vec<String> = t.iter().map(|&x| float(round(x))).collect();
         format!(", uv_transform = [{}]", t.join(", "))
     });
+    let node = d
+        .posing_node
+        .map_or_else(String::new, |n| format!(", node = {n}"));
     let _ = writeln!(
         out,
-        "mesh = {{ gltf = {}, mesh = {}, primitive = {}{uv_transform} }}",
+        "mesh = {{ gltf = {}, mesh = {}, primitive = {}{uv_transform}{node} }}",
         toml_string(relative),
         d.mesh,
         d.primitive

@@ -70,6 +70,10 @@ pub enum MeshSpec {
         /// (a u + b v + c, d u + e v + f) when the mesh is read — glTF's
         /// KHR_texture_transform with a rotation, baked (docs/gltf.md).
         uv_transform: Option<[f64; 6]>,
+        /// `node = N`: the glTF node that draws the primitive, whose morph
+        /// weights and skin pose it as the file shows it (docs/gltf.md,
+        /// "Posed meshes"); without it, the mesh's own default state.
+        node: Option<usize>,
     },
 }
 

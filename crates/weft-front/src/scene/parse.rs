@@ -68,7 +68,7 @@ pub const SAMPLER_KEYS: &[&str] = &[
 /// Keys of an instance's `variant = { name = "…", replaces = "…" }`.
 pub const VARIANT_KEYS: &[&str] = &["name", "replaces"];
 /// Keys of a glTF mesh reference, `mesh = { gltf = "x.glb", mesh = 0, primitive = 0 }`.
-pub const GLTF_MESH_KEYS: &[&str] = &["gltf", "mesh", "primitive", "uv_transform"];
+pub const GLTF_MESH_KEYS: &[&str] = &["gltf", "mesh", "primitive", "uv_transform", "node"];
 
 /// The materials root when `[scene]` sets no `materials`, relative to the scene file.
 pub const DEFAULT_MATERIALS: &str = "../materials";

@@ -96,7 +96,14 @@ fn instance_mesh(
             mesh,
             primitive,
             uv_transform,
-        } => match gltf.mesh(&manifest_dir.join(path), *mesh, *primitive, *uv_transform) {
+            node,
+        } => match gltf.mesh(
+            &manifest_dir.join(path),
+            *mesh,
+            *primitive,
+            *uv_transform,
+            *node,
+        ) {
             Ok(m) => Some(InstanceMesh::File(m)),
             Err(e) => {
                 diags.push(

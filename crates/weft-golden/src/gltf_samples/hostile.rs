@@ -224,6 +224,16 @@ pub fn hostile() -> Vec<(&'static str, Vec<u8>, &'static str, &'static str)> {
         "every element as zero",
     );
     case(
+        "morph_weights_count",
+        &|v| {
+            v["meshes"][0]["primitives"][0]["targets"] =
+                json!([ { "POSITION": 0 }, { "POSITION": 0 } ]);
+            v["meshes"][0]["weights"] = json!([0.5]);
+        },
+        "/meshes/0/weights",
+        "morph weights for the 2 targets",
+    );
+    case(
         "positions_as_bytes",
         &|v| {
             v["accessors"][0]["componentType"] = json!(5121);

@@ -14,6 +14,8 @@
 //!   a glTF sampler and a rotated texture transform.
 //! - [`quantized_sphere`]: one sphere with float attributes and under
 //!   `KHR_mesh_quantization`, made by the test that compares them.
+//! - [`skinned_strip`], [`morphing_triangle`]: meshes posed by a skin and by
+//!   morph weights, made by the test that checks their poses.
 //! - [`hostile`]: files weft must refuse, each with the JSON pointer the
 //!   error names (tests/rendering/gltf_scenes.rs).
 //!
@@ -21,11 +23,13 @@
 //! them equal to this generator.
 
 mod hostile;
+mod posed;
 mod quantized;
 mod scenes;
 mod textures;
 
 pub use hostile::hostile;
+pub use posed::{MORPH_BASE, MORPH_TARGETS, STRIP_ROWS, morphing_triangle, skinned_strip};
 pub use quantized::{Encoding, SPHERE_AT, quantized_sphere};
 pub use scenes::{bust, cutouts, showroom};
 pub use textures::{png_rgba, wood_base_color, wood_metallic_roughness};

@@ -344,6 +344,10 @@ fn parse_mesh(t: &Table, at: &Span, cx: &mut Cx) -> Option<Spanned<MeshSpec>> {
         };
         let mesh = index("mesh", cx)?;
         let primitive = index("primitive", cx)?;
+        let node = match table.get("node") {
+            None => None,
+            Some(_) => Some(index("node", cx)?),
+        };
         let uv_transform = match table.numbers("uv_transform", cx) {
             None => None,
             Some(n) if n.len() == 6 && n.iter().all(|x| fits_f32(*x)) => {
@@ -365,6 +369,7 @@ fn parse_mesh(t: &Table, at: &Span, cx: &mut Cx) -> Option<Spanned<MeshSpec>> {
                 mesh,
                 primitive,
                 uv_transform,
+                node,
             },
             span: v.span(),
         });

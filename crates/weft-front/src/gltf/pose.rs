@@ -1,0 +1,373 @@
+//! A primitive as the file shows it when nothing is animated: its morph
+//! targets blended by the default weights, and its vertices skinned by the
+//! skin's joints where they stand (glTF 2.0 § 3.7.2.2 and § 3.7.3). weft
+//! draws static scenes, so a character exported mid-pose or with a blend
+//! shape dialled in draws as every glTF viewer shows it, not as its
+//! unposed bind mesh.
+//!
+//! - Morph targets: position += Σ wₖ Δpositionₖ, and the same for normals
+//!   and tangents (xyz), with the node's `weights`, else the mesh's.
+//! - Skin: each vertex by Σ wᵢ · world(jointᵢ) · inverseBind(jointᵢ) over its
+//!   JOINTS_n/WEIGHTS_n sets (weights divided by their sum); normals by the
+//!   cofactor of that matrix, tangents by its 3×3; the result is in world
+//!   space, so the instance that draws it has the identity matrix (glTF
+//!   ignores a skinned node's own transform).
+//!
+//! Every accessor is checked as `meshes` checks the primitive's own.
+
+use super::GltfError;
+use super::accessors::{self, read_f32};
+use super::document::GltfFile;
+use super::meshes::{Allowed, Norm, check_accessor};
+use super::transform::{Mat4, mul, normal_matrix, normalize, transform_point, transform_vector};
+use gltf::accessor::{DataType, Dimensions};
+use weft_meta::mesh::MeshData;
+
+/// Whether drawing `node`'s mesh differs from the mesh's own default
+/// state: the node has a skin, or morph weights of its own.
+pub fn node_poses(node: &gltf::Node) -> bool {
+    node.skin().is_some() || (node.weights().is_some() && node.mesh().is_some())
+}
+
+/// The morph weights a primitive is drawn with: the node's, else the
+/// mesh's; all zero when neither has any.
+fn default_weights<'a>(mesh: &gltf::Mesh<'a>, node: Option<&gltf::Node<'a>>) -> Option<&'a [f32]> {
+    node.and_then(gltf::Node::weights)
+        .or_else(|| mesh.weights())
+}
+
+/// Blends `prim`'s morph targets into `data` (positions, and normals and
+/// tangents where `data` has them) with the default weights.
+pub fn morph(
+    file: &GltfFile,
+    mesh: &gltf::Mesh,
+    prim: &gltf::Primitive,
+    node: Option<&gltf::Node>,
+    data: &mut MeshData,
+    pointer: &str,
+) -> Result<(), GltfError> {
+    let targets: Vec<gltf::mesh::MorphTarget> = prim.morph_targets().collect();
+    let Some(weights) = default_weights(mesh, node) else {
+        return Ok(());
+    };
+    if targets.is_empty() {
+        return Ok(());
+    }
+    if weights.len() != targets.len() {
+        let at = match node.filter(|n| n.weights().is_some()) {
+            Some(n) => format!("/nodes/{}/weights", n.index()),
+            None => format!("/meshes/{}/weights", mesh.index()),
+        };
+        return Err(file.error(
+            &at,
+            format!(
+                "{} morph weights for the {} targets of {pointer}",
+                weights.len(),
+                targets.len()
+            ),
+            "glTF gives one default weight per morph target; re-export the file",
+        ));
+    }
+    let quantized = accessors::quantized(file);
+    let count = data.positions.len();
+    for (k, (target, &w)) in targets.iter().zip(weights).enumerate() {
+        if w == 0.0 {
+            continue;
+        }
+        if !w.is_finite() {
+            return Err(file.error(
+                &format!("/meshes/{}/weights/{k}", mesh.index()),
+                "a morph weight is not finite".into(),
+                "re-export the file",
+            ));
+        }
+        let what = |stream: &str| format!("{pointer} target {k} {stream}");
+        let (positions, normals, tangents) =
+            (target.positions(), target.normals(), target.tangents());
+        if let Some(a) = &positions {
+            let deltas: Vec<[f32; 3]> = read_checked(
+                file,
+                a,
+                &delta_types(quantized, true),
+                count,
+                &what("POSITION"),
+            )?;
+            add(&mut data.positions, &deltas, w);
+        }
+        if let Some(a) = normals.as_ref().filter(|_| !data.normals.is_empty()) {
+            let deltas: Vec<[f32; 3]> = read_checked(
+                file,
+                a,
+                &delta_types(quantized, false),
+                count,
+                &what("NORMAL"),
+            )?;
+            add(&mut data.normals, &deltas, w);
+        }
+        if let Some(a) = tangents.as_ref().filter(|_| !data.tangents.is_empty()) {
+            let deltas: Vec<[f32; 3]> = read_checked(
+                file,
+                a,
+                &delta_types(quantized, false),
+                count,
+                &what("TANGENT"),
+            )?;
+            for (t, d) in data.tangents.iter_mut().zip(&deltas) {
+                for c in 0..3 {
+                    t[c] += w * d[c];
+                }
+            }
+        }
+    }
+    finite_positions(file, data, pointer)
+}
+
+/// The accessor types a morph target's displacements may have: float, and
+/// with KHR_mesh_quantization i8/i16 (plain or normalised for positions,
+/// normalised for normals and tangents).
+fn delta_types(quantized: bool, position: bool) -> Vec<Allowed> {
+    let mut types = vec![(DataType::F32, Dimensions::Vec3, Norm::Either)];
+    if quantized {
+        let norm = if position { Norm::Either } else { Norm::Yes };
+        types.extend([DataType::I8, DataType::I16].map(|t| (t, Dimensions::Vec3, norm)));
+    }
+    types
+}
+
+fn add(values: &mut [[f32; 3]], deltas: &[[f32; 3]], w: f32) {
+    for (v, d) in values.iter_mut().zip(deltas) {
+        for c in 0..3 {
+            v[c] += w * d[c];
+        }
+    }
+}
+
+/// An accessor checked (type, byte ranges, one element per vertex) and read.
+fn read_checked<const N: usize>(
+    file: &GltfFile,
+    accessor: &gltf::Accessor,
+    allowed: &[Allowed],
+    count: usize,
+    what: &str,
+) -> Result<Vec<[f32; N]>, GltfError>
+where
+    [f32; N]: gltf::accessor::Item,
+    [i8; N]: gltf::accessor::Item,
+    [u8; N]: gltf::accessor::Item,
+    [i16; N]: gltf::accessor::Item,
+    [u16; N]: gltf::accessor::Item,
+{
+    check_accessor(file, accessor, allowed, what)?;
+    let pointer = format!("/accessors/{}", accessor.index());
+    if accessor.count() != count {
+        return Err(file.error(
+            &pointer,
+            format!("{what} has {} elements, POSITION {count}", accessor.count()),
+            "every attribute of a primitive has one element per vertex",
+        ));
+    }
+    read_f32(file, accessor).ok_or_else(|| {
+        file.error(
+            &pointer,
+            format!("{what} could not be read"),
+            "re-export the file",
+        )
+    })
+}
+
+/// Skins `data` by `node`'s skin at the joints' default transforms, into
+/// world space. `worlds` holds every node's world matrix.
+pub fn skin(
+    file: &GltfFile,
+    prim: &gltf::Primitive,
+    node: &gltf::Node,
+    worlds: &[Option<Mat4>],
+    data: &mut MeshData,
+    pointer: &str,
+) -> Result<(), GltfError> {
+    let Some(skin) = node.skin() else {
+        return Ok(());
+    };
+    let matrices = joint_matrices(file, &skin, worlds)?;
+    let count = data.positions.len();
+    // Every JOINTS_n with its WEIGHTS_n: indices and weights per vertex.
+    let mut influences: Vec<Vec<(usize, f32)>> = vec![Vec::new(); count];
+    for set in 0u32.. {
+        let (Some(joints), Some(weights)) = (
+            prim.get(&gltf::Semantic::Joints(set)),
+            prim.get(&gltf::Semantic::Weights(set)),
+        ) else {
+            break;
+        };
+        let joint_types =
+            [DataType::U8, DataType::U16].map(|t| (t, Dimensions::Vec4, Norm::Either));
+        let weight_types = [
+            (DataType::F32, Dimensions::Vec4, Norm::Either),
+            (DataType::U8, Dimensions::Vec4, Norm::Yes),
+            (DataType::U16, Dimensions::Vec4, Norm::Yes),
+        ];
+        let j: Vec<[f32; 4]> = read_checked(
+            file,
+            &joints,
+            &joint_types,
+            count,
+            &format!("{pointer} JOINTS_{set}"),
+        )?;
+        let w: Vec<[f32; 4]> = read_checked(
+            file,
+            &weights,
+            &weight_types,
+            count,
+            &format!("{pointer} WEIGHTS_{set}"),
+        )?;
+        for (v, (j, w)) in j.iter().zip(&w).enumerate() {
+            for (&joint, &weight) in j.iter().zip(w) {
+                if weight == 0.0 {
+                    continue;
+                }
+                let joint = joint as usize;
+                if joint >= matrices.len() || !weight.is_finite() || weight < 0.0 {
+                    return Err(file.error(
+                        &format!("/accessors/{}", joints.index()),
+                        format!(
+                            "vertex {v} of {pointer}: joint {joint} with weight {weight}; the skin has {} joints",
+                            matrices.len()
+                        ),
+                        "joint indices point into the skin's `joints`, weights are finite and ≥ 0; re-export the file",
+                    ));
+                }
+                influences[v].push((joint, weight));
+            }
+        }
+    }
+    if influences.iter().all(Vec::is_empty) {
+        return Err(file.error(
+            &format!("{pointer}/attributes"),
+            format!(
+                "node {} has a skin but the primitive has no JOINTS_0 and WEIGHTS_0",
+                node.index()
+            ),
+            "a skinned primitive names its joints and weights; re-export the file",
+        ));
+    }
+    for (v, list) in influences.iter().enumerate() {
+        let total: f32 = list.iter().map(|(_, w)| w).sum();
+        // No weight at all: the vertex stays where the bind pose puts it.
+        if total <= 0.0 {
+            continue;
+        }
+        let mut m = [[0.0f64; 4]; 4];
+        for &(joint, weight) in list {
+            let share = f64::from(weight / total);
+            for (col, joint_col) in m.iter_mut().zip(&matrices[joint]) {
+                for (x, y) in col.iter_mut().zip(joint_col) {
+                    *x += share * y;
+                }
+            }
+        }
+        let p = data.positions[v].map(f64::from);
+        data.positions[v] = transform_point(&m, p).map(|x| x as f32);
+        let (cofactor, det) = normal_matrix(&m);
+        if let Some(n) = data.normals.get_mut(v) {
+            let moved: [f64; 3] =
+                std::array::from_fn(|r| (0..3).map(|c| cofactor[c][r] * f64::from(n[c])).sum());
+            *n = normalize(moved)
+                .unwrap_or([0.0, 0.0, 1.0])
+                .map(|x| x as f32);
+        }
+        if let Some(t) = data.tangents.get_mut(v) {
+            let moved = transform_vector(&m, [t[0], t[1], t[2]].map(f64::from));
+            let [x, y, z] = normalize(moved)
+                .unwrap_or([1.0, 0.0, 0.0])
+                .map(|x| x as f32);
+            let w = if det < 0.0 { -t[3] } else { t[3] };
+            *t = [x, y, z, w];
+        }
+    }
+    finite_positions(file, data, pointer)
+}
+
+/// The joint matrices of node `node`'s skin for framing the scene; empty
+/// when it has none or they cannot be read (the mesh's own read reports it).
+pub fn joint_frames(file: &GltfFile, node: usize, worlds: &[Option<Mat4>]) -> Vec<Mat4> {
+    file.document
+        .nodes()
+        .nth(node)
+        .and_then(|n| n.skin())
+        .and_then(|skin| joint_matrices(file, &skin, worlds).ok())
+        .unwrap_or_default()
+}
+
+/// world(joint) · inverseBind(joint) for each of the skin's joints.
+fn joint_matrices(
+    file: &GltfFile,
+    skin: &gltf::Skin,
+    worlds: &[Option<Mat4>],
+) -> Result<Vec<Mat4>, GltfError> {
+    let at = format!("/skins/{}", skin.index());
+    let joints: Vec<gltf::Node> = skin.joints().collect();
+    let inverse_binds: Vec<Mat4> = match skin.inverse_bind_matrices() {
+        None => vec![super::transform::IDENTITY; joints.len()],
+        Some(a) => {
+            let allowed = [(DataType::F32, Dimensions::Mat4, Norm::Either)];
+            check_accessor(file, &a, &allowed, &format!("{at} inverseBindMatrices"))?;
+            if a.count() < joints.len() {
+                return Err(file.error(
+                    &format!("{at}/inverseBindMatrices"),
+                    format!(
+                        "{} inverse bind matrices for {} joints",
+                        a.count(),
+                        joints.len()
+                    ),
+                    "one matrix per joint; re-export the file",
+                ));
+            }
+            let get = |b: gltf::Buffer| file.buffers.get(b.index()).map(Vec::as_slice);
+            skin.reader(get)
+                .read_inverse_bind_matrices()
+                .ok_or_else(|| {
+                    file.error(
+                        &format!("{at}/inverseBindMatrices"),
+                        "could not be read".into(),
+                        "re-export the file",
+                    )
+                })?
+                .map(|m| m.map(|c| c.map(f64::from)))
+                .collect()
+        }
+    };
+    joints
+        .iter()
+        .zip(&inverse_binds)
+        .enumerate()
+        .map(|(k, (joint, ibm))| {
+            let world = worlds
+                .get(joint.index())
+                .copied()
+                .flatten()
+                .ok_or_else(|| {
+                    file.error(
+                        &format!("{at}/joints/{k}"),
+                        format!(
+                            "joint node {} has no world transform (its parents form a cycle)",
+                            joint.index()
+                        ),
+                        "glTF nodes form disjoint trees",
+                    )
+                })?;
+            Ok(mul(&world, ibm))
+        })
+        .collect()
+}
+
+fn finite_positions(file: &GltfFile, data: &MeshData, pointer: &str) -> Result<(), GltfError> {
+    if data.positions.iter().flatten().all(|x| x.is_finite()) {
+        Ok(())
+    } else {
+        Err(file.error(
+            pointer,
+            "a posed position is not finite".into(),
+            "check the morph weights, the joints' transforms and the inverse bind matrices",
+        ))
+    }
+}
