@@ -826,13 +826,7 @@ fn vertex_colours_are_dropped_with_a_warning() {
     });
     let path = dir.path().join("coloured.gltf");
     std::fs::write(&path, serde_json::to_vec(&gltf).unwrap()).unwrap();
-    let materials = repo().join("materials");
-    let options = SceneBuildOptions {
-        gltf_materials: Some(&materials),
-        ..SceneBuildOptions::default()
-    };
-    let out = build_scene(&path, &options)
-        .unwrap_or_else(|(db, diags)| panic!("{}", diags.render_plain(&db)));
+    let out = build_with_library(&path);
     assert_eq!(out.metadata.instances.len(), 2);
     let (db, warnings) = out.warnings.as_ref().expect("a warning");
     let text = warnings.render_plain(db);
@@ -852,20 +846,10 @@ fn vertex_colours_are_dropped_with_a_warning() {
 #[test]
 fn quantized_meshes_build_as_their_float_originals() {
     let dir = tempfile::tempdir().unwrap();
-    let materials = repo().join("materials");
-    let options = SceneBuildOptions {
-        gltf_materials: Some(&materials),
-        ..SceneBuildOptions::default()
-    };
     let build = |name: &str, encoding: gltf_samples::Encoding| {
-        let path = dir.path().join(format!("{name}.glb"));
-        std::fs::write(&path, gltf_samples::quantized_sphere(encoding)).unwrap();
-        let out = build_scene(&path, &options)
-            .unwrap_or_else(|(db, diags)| panic!("{}", diags.render_plain(&db)));
-        let inst = &out.metadata.instances[0];
-        let file = out.metadata.meshes[&inst.mesh].file.clone().unwrap();
-        let mesh = MeshData::from_bytes(&out.files[&format!("{name}/{file}")]).unwrap();
-        let m = inst.transform.model;
+        let (meta, meshes) = build_glb(dir.path(), name, gltf_samples::quantized_sphere(encoding));
+        let mesh = meshes["ball"].clone();
+        let m = meta.instances[0].transform.model;
         let world: Vec<[f32; 3]> = mesh
             .positions
             .iter()
@@ -873,7 +857,7 @@ fn quantized_meshes_build_as_their_float_originals() {
                 std::array::from_fn(|r| m[r] * p[0] + m[4 + r] * p[1] + m[8 + r] * p[2] + m[12 + r])
             })
             .collect();
-        (out.metadata.camera.clone(), mesh, world)
+        (meta.camera.clone(), mesh, world)
     };
     let (camera, float, float_world) = build("float", gltf_samples::Encoding::Float);
     for encoding in [
@@ -936,6 +920,17 @@ fn assert_same_sphere(
     }
 }
 
+/// Builds the glTF file at `path` (outside the repository) with the
+/// repository's materials.
+fn build_with_library(path: &Path) -> weft_compiler::SceneOutput {
+    let materials = repo().join("materials");
+    let options = SceneBuildOptions {
+        gltf_materials: Some(&materials),
+        ..SceneBuildOptions::default()
+    };
+    build_scene(path, &options).unwrap_or_else(|(db, diags)| panic!("{}", diags.render_plain(&db)))
+}
+
 /// Builds `bytes` as `<name>.glb` in `dir`: its metadata and each
 /// instance's mesh by instance name.
 fn build_glb(
@@ -945,13 +940,7 @@ fn build_glb(
 ) -> (SceneMetadata, std::collections::BTreeMap<String, MeshData>) {
     let path = dir.join(format!("{name}.glb"));
     std::fs::write(&path, bytes).unwrap();
-    let materials = repo().join("materials");
-    let options = SceneBuildOptions {
-        gltf_materials: Some(&materials),
-        ..SceneBuildOptions::default()
-    };
-    let out = build_scene(&path, &options)
-        .unwrap_or_else(|(db, diags)| panic!("{}", diags.render_plain(&db)));
+    let out = build_with_library(&path);
     let meshes = out
         .metadata
         .instances

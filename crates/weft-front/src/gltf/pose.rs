@@ -81,42 +81,31 @@ pub fn morph(
                 "re-export the file",
             ));
         }
-        let what = |stream: &str| format!("{pointer} target {k} {stream}");
-        let (positions, normals, tangents) =
-            (target.positions(), target.normals(), target.tangents());
-        if let Some(a) = &positions {
-            let deltas: Vec<[f32; 3]> = read_checked(
-                file,
-                a,
-                &delta_types(quantized, true),
-                count,
-                &what("POSITION"),
-            )?;
-            add(&mut data.positions, &deltas, w);
-        }
-        if let Some(a) = normals.as_ref().filter(|_| !data.normals.is_empty()) {
-            let deltas: Vec<[f32; 3]> = read_checked(
-                file,
-                a,
-                &delta_types(quantized, false),
-                count,
-                &what("NORMAL"),
-            )?;
-            add(&mut data.normals, &deltas, w);
-        }
-        if let Some(a) = tangents.as_ref().filter(|_| !data.tangents.is_empty()) {
-            let deltas: Vec<[f32; 3]> = read_checked(
-                file,
-                a,
-                &delta_types(quantized, false),
-                count,
-                &what("TANGENT"),
-            )?;
-            for (t, d) in data.tangents.iter_mut().zip(&deltas) {
-                for c in 0..3 {
-                    t[c] += w * d[c];
+        // A stream's displacements, where the target has them and the
+        // primitive has the stream.
+        let deltas = |accessor: Option<gltf::Accessor>, has: bool, position: bool, stream: &str| {
+            match accessor.filter(|_| has) {
+                None => Ok(None),
+                Some(a) => {
+                    let what = format!("{pointer} target {k} {stream}");
+                    let types = delta_types(quantized, position);
+                    read_checked::<3>(file, &a, &types, count, &what).map(Some)
                 }
             }
+        };
+        if let Some(d) = deltas(target.positions(), true, true, "POSITION")? {
+            add(data.positions.iter_mut().map(|p| &mut p[..]), &d, w);
+        }
+        if let Some(d) = deltas(target.normals(), !data.normals.is_empty(), false, "NORMAL")? {
+            add(data.normals.iter_mut().map(|n| &mut n[..]), &d, w);
+        }
+        if let Some(d) = deltas(
+            target.tangents(),
+            !data.tangents.is_empty(),
+            false,
+            "TANGENT",
+        )? {
+            add(data.tangents.iter_mut().map(|t| &mut t[..3]), &d, w);
         }
     }
     finite_positions(file, data, pointer)
@@ -134,10 +123,11 @@ fn delta_types(quantized: bool, position: bool) -> Vec<Allowed> {
     types
 }
 
-fn add(values: &mut [[f32; 3]], deltas: &[[f32; 3]], w: f32) {
-    for (v, d) in values.iter_mut().zip(deltas) {
-        for c in 0..3 {
-            v[c] += w * d[c];
+/// Each value's first three components plus `w` times its displacement.
+fn add<'v>(values: impl Iterator<Item = &'v mut [f32]>, deltas: &[[f32; 3]], w: f32) {
+    for (v, d) in values.zip(deltas) {
+        for (x, dx) in v.iter_mut().zip(d) {
+            *x += w * dx;
         }
     }
 }
