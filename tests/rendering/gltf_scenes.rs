@@ -1016,10 +1016,17 @@ fn morph_targets_blend_with_the_default_weights() {
             })
             .collect()
     };
-    // Without normals each triangle corner is its own vertex (flat normals),
-    // in the order the triangle lists them.
     for (instance, weights) in [("mesh_weights", [0.5, 0.5]), ("node_weights", [1.0, 0.0])] {
-        let got = &meshes[instance].positions;
-        assert_eq!(got, &blend(weights), "{instance}");
+        let mesh = &meshes[instance];
+        assert_eq!(mesh.positions, blend(weights), "{instance}");
+        // The normal (0, 0, 1) displaced by w₀ (0.5, 0, 0), at unit length.
+        let d = weights[0] * gltf_samples::MORPH_NORMAL_DELTA[0];
+        let len = (d * d + 1.0).sqrt();
+        for n in &mesh.normals {
+            assert!(
+                (n[0] - d / len).abs() < 1e-6 && n[1] == 0.0 && (n[2] - 1.0 / len).abs() < 1e-6,
+                "{instance}: {n:?}"
+            );
+        }
     }
 }

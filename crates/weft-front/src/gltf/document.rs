@@ -38,6 +38,9 @@ pub struct GltfFile {
     pub document: gltf::Document,
     /// Per buffer, exactly its declared `byteLength` bytes.
     pub buffers: Vec<Vec<u8>>,
+    /// Every node's world matrix, worked out once when a skin first needs
+    /// them ([`GltfFile::node_worlds`]).
+    node_worlds: std::sync::OnceLock<Vec<Option<super::transform::Mat4>>>,
 }
 
 /// `materials[3].extensions.KHR_x` (gltf-json's path) as a JSON pointer,
@@ -149,7 +152,15 @@ impl GltfFile {
             dir: dir.map_or_else(PathBuf::new, Path::to_path_buf),
             document,
             buffers,
+            node_worlds: std::sync::OnceLock::new(),
         })
+    }
+
+    /// Each node's world matrix in the file's default state
+    /// ([`super::transform::world_matrices`]), computed once per file.
+    pub fn node_worlds(&self) -> &[Option<super::transform::Mat4>] {
+        self.node_worlds
+            .get_or_init(|| super::transform::world_matrices(self))
     }
 
     pub fn error(&self, pointer: &str, message: String, hint: &str) -> GltfError {

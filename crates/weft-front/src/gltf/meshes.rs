@@ -285,8 +285,7 @@ pub fn read_primitive(
         pose::morph(file, m, &prim, node.as_ref(), &mut data, &pointer)?;
     }
     if let Some(node) = node.as_ref().filter(|n| n.skin().is_some()) {
-        let worlds = super::transform::world_matrices(file);
-        pose::skin(file, &prim, node, &worlds, &mut data, &pointer)?;
+        pose::skin(file, &prim, node, file.node_worlds(), &mut data, &pointer)?;
     }
     Ok(complete_streams(data, indices, &attributes))
 }

@@ -70,6 +70,7 @@ pub fn morph(
     }
     let quantized = accessors::quantized(file);
     let count = data.positions.len();
+    let (mut moved_normals, mut moved_tangents) = (false, false);
     for (k, (target, &w)) in targets.iter().zip(weights).enumerate() {
         if w == 0.0 {
             continue;
@@ -98,6 +99,7 @@ pub fn morph(
         }
         if let Some(d) = deltas(target.normals(), !data.normals.is_empty(), false, "NORMAL")? {
             add(data.normals.iter_mut().map(|n| &mut n[..]), &d, w);
+            moved_normals = true;
         }
         if let Some(d) = deltas(
             target.tangents(),
@@ -106,9 +108,27 @@ pub fn morph(
             "TANGENT",
         )? {
             add(data.tangents.iter_mut().map(|t| &mut t[..3]), &d, w);
+            moved_tangents = true;
+        }
+    }
+    // Displaced normals and tangents are directions again.
+    if moved_normals {
+        for n in &mut data.normals {
+            *n = unit(*n, [0.0, 0.0, 1.0]);
+        }
+    }
+    if moved_tangents {
+        for t in &mut data.tangents {
+            let [x, y, z] = unit([t[0], t[1], t[2]], [1.0, 0.0, 0.0]);
+            *t = [x, y, z, t[3]];
         }
     }
     finite_positions(file, data, pointer)
+}
+
+/// `v` at unit length, `fallback` when it has none.
+fn unit(v: [f32; 3], fallback: [f32; 3]) -> [f32; 3] {
+    normalize(v.map(f64::from)).map_or(fallback, |u| u.map(|x| x as f32))
 }
 
 /// The accessor types a morph target's displacements may have: float, and

@@ -223,12 +223,12 @@ fn drawn_primitives(file: &GltfFile) -> Result<(Vec<Draw>, Placed), GltfError> {
 fn bounds(file: &GltfFile, draws: &[Draw]) -> Option<([f64; 3], f64)> {
     let mut lo = [f64::INFINITY; 3];
     let mut hi = [f64::NEG_INFINITY; 3];
-    let worlds = super::transform::world_matrices(file);
+    let worlds = file.node_worlds();
     for d in draws {
         // A skinned primitive's box through each joint's matrix: a bound of
         // where skinning can put it (the mesh itself is posed later).
         let frames = match d.posing_node.filter(|_| d.skinned) {
-            Some(n) => super::pose::joint_frames(file, n, &worlds),
+            Some(n) => super::pose::joint_frames(file, n, worlds),
             None => vec![d.world],
         };
         let prim = file

@@ -29,7 +29,9 @@ mod scenes;
 mod textures;
 
 pub use hostile::hostile;
-pub use posed::{MORPH_BASE, MORPH_TARGETS, STRIP_ROWS, morphing_triangle, skinned_strip};
+pub use posed::{
+    MORPH_BASE, MORPH_NORMAL_DELTA, MORPH_TARGETS, STRIP_ROWS, morphing_triangle, skinned_strip,
+};
 pub use quantized::{Encoding, SPHERE_AT, quantized_sphere};
 pub use scenes::{bust, cutouts, showroom};
 pub use textures::{png_rgba, wood_base_color, wood_metallic_roughness};

@@ -7,8 +7,9 @@
 //!   child at y = 1 turned 90° about +Z), weights from (1, 0) at the bottom
 //!   to (0, 1) at the top; the skinned node stands at x = 5, which glTF
 //!   ignores;
-//! - a morphing triangle: two targets, mesh weights (0.5, 0.5), drawn by a
-//!   node of its own and by a node whose weights are (1, 0).
+//! - a morphing triangle facing +z: two targets (the first also tilts the
+//!   normals by (0.5, 0, 0)), mesh weights (0.5, 0.5), drawn by a node of
+//!   its own and by a node whose weights are (1, 0).
 
 use super::{Packed, asset, glb};
 use serde_json::json;
@@ -111,14 +112,19 @@ pub const MORPH_TARGETS: [[[f32; 3]; 3]; 2] = [
     [[0.0, 0.0, 0.0], [0.5, 0.0, 0.0], [1.0, 1.0, 0.0]],
 ];
 
+/// The first morph target's displacement of every normal.
+pub const MORPH_NORMAL_DELTA: [f32; 3] = [0.5, 0.0, 0.0];
+
 /// The morphing triangle (see the module docs) as a GLB.
 pub fn morphing_triangle() -> Vec<u8> {
     let mut p = packed();
     let position = p.floats(&MORPH_BASE, "VEC3", true);
-    let targets: Vec<_> = MORPH_TARGETS
+    let normal = p.floats(&[[0.0, 0.0, 1.0]; 3], "VEC3", false);
+    let mut targets: Vec<_> = MORPH_TARGETS
         .iter()
         .map(|t| json!({ "POSITION": p.floats(t, "VEC3", true) }))
         .collect();
+    targets[0]["NORMAL"] = json!(p.floats(&[MORPH_NORMAL_DELTA; 3], "VEC3", false));
     let json = json!({
         "asset": asset(),
         "scene": 0,
@@ -128,7 +134,7 @@ pub fn morphing_triangle() -> Vec<u8> {
             { "name": "node_weights", "mesh": 0, "weights": [1.0, 0.0], "translation": [2.0, 0.0, 0.0] },
         ],
         "meshes": [ { "name": "tri", "weights": [0.5, 0.5],
-            "primitives": [ { "attributes": { "POSITION": position }, "targets": targets, "mode": 4 } ] } ],
+            "primitives": [ { "attributes": { "POSITION": position, "NORMAL": normal }, "targets": targets, "mode": 4 } ] } ],
         "buffers": [ { "byteLength": p.bin.len() } ],
         "bufferViews": p.views,
         "accessors": p.accessors,
