@@ -259,14 +259,14 @@ pub fn read_primitive(
                 "count meshes and primitives from 0",
             )
         })?;
-    if prim.mode() != Mode::Triangles {
+    if !matches!(
+        prim.mode(),
+        Mode::Triangles | Mode::TriangleStrip | Mode::TriangleFan
+    ) {
         return Err(file.error(
             &format!("{pointer}/mode"),
-            format!(
-                "primitive mode {:?}; weft draws triangle lists",
-                prim.mode()
-            ),
-            "export triangles (mode 4); points, lines, strips and fans are not drawn",
+            format!("primitive mode {:?}; weft draws triangles", prim.mode()),
+            "export triangles (modes 4, 5 or 6); points and lines are not surfaces to shade",
         ));
     }
     let attributes = Attributes::checked(file, &prim, &pointer)?;
@@ -405,6 +405,17 @@ fn read_streams(
             .collect(),
         None => (0..count as u32).collect(),
     };
+    let indices = triangle_list(prim.mode(), indices);
+    if indices.is_empty() && prim.mode() != Mode::Triangles {
+        return Err(file.error(
+            pointer,
+            format!(
+                "a {:?} of fewer than 3 vertices draws no triangle",
+                prim.mode()
+            ),
+            "re-export the file",
+        ));
+    }
     if !indices.len().is_multiple_of(3) {
         return Err(file.error(
             pointer,
@@ -453,6 +464,23 @@ fn read_streams(
             .collect();
     }
     Ok((data, indices))
+}
+
+/// A strip's or a fan's triangles as a list, in glTF 2.0's order
+/// (§ 3.7.2.1, "Topology"): strip triangle i is (vᵢ, vᵢ₊₁₊ᵢ﹪₂, vᵢ₊₂₋ᵢ﹪₂),
+/// fan triangle i (vᵢ₊₁, vᵢ₊₂, v₀), so every triangle keeps the winding
+/// of the first. A list is returned as it is.
+fn triangle_list(mode: Mode, indices: Vec<u32>) -> Vec<u32> {
+    let n = indices.len();
+    match mode {
+        Mode::TriangleStrip => (0..n.saturating_sub(2))
+            .flat_map(|i| [indices[i], indices[i + 1 + i % 2], indices[i + 2 - i % 2]])
+            .collect(),
+        Mode::TriangleFan => (0..n.saturating_sub(2))
+            .flat_map(|i| [indices[i + 1], indices[i + 2], indices[0]])
+            .collect(),
+        _ => indices,
+    }
 }
 
 /// What glTF says a renderer makes when the file lacks it: flat normals
@@ -613,4 +641,29 @@ fn mikktspace_tangents(data: &MeshData, indices: &[u32]) -> Vec<[f32; 4]> {
             }
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn strips_and_fans_become_lists_with_the_first_triangles_winding() {
+        // A quad 0-1-2-3 (counter-clockwise) as a strip 0, 1, 3, 2 and as a
+        // fan 0, 1, 2, 3: both give two counter-clockwise triangles.
+        assert_eq!(
+            triangle_list(Mode::TriangleStrip, vec![0, 1, 3, 2]),
+            [0, 1, 3, 1, 2, 3]
+        );
+        assert_eq!(
+            triangle_list(Mode::TriangleFan, vec![0, 1, 2, 3]),
+            [1, 2, 0, 2, 3, 0]
+        );
+        assert_eq!(
+            triangle_list(Mode::TriangleStrip, vec![0, 1, 2, 3, 4]),
+            [0, 1, 2, 1, 3, 2, 2, 3, 4]
+        );
+        assert!(triangle_list(Mode::TriangleFan, vec![0, 1]).is_empty());
+        assert_eq!(triangle_list(Mode::Triangles, vec![2, 1, 0]), [2, 1, 0]);
+    }
 }
