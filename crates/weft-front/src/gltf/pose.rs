@@ -23,6 +23,15 @@ use super::transform::{Mat4, mul, normal_matrix, normalize, transform_point, tra
 use gltf::accessor::{DataType, Dimensions};
 use weft_meta::mesh::MeshData;
 
+/// The most vertex × morph target displacements one primitive may blend
+/// (2²⁸: ARKit's 52 blend shapes on a 5-million-vertex mesh), and the most
+/// JOINTS_n/WEIGHTS_n sets (32 influences) and joints per skin: a hostile
+/// file whose targets or sets all name the same accessor would otherwise
+/// cost time and memory its bytes do not bound.
+pub const MAX_MORPH_ELEMENTS: usize = 1 << 28;
+pub const MAX_SKIN_SETS: u32 = 8;
+pub const MAX_JOINTS: usize = 1 << 16;
+
 /// Whether drawing `node`'s mesh differs from the mesh's own default
 /// state: the node has a skin, or morph weights of its own.
 pub fn node_poses(node: &gltf::Node) -> bool {
@@ -70,6 +79,14 @@ pub fn morph(
     }
     let quantized = accessors::quantized(file);
     let count = data.positions.len();
+    let blended = weights.iter().filter(|w| **w != 0.0).count();
+    if blended.saturating_mul(count) > MAX_MORPH_ELEMENTS {
+        return Err(file.error(
+            pointer,
+            format!("{blended} morph targets with a weight × {count} vertices to blend"),
+            "weft blends at most 2^28 displacements per primitive; bake the default pose in your DCC",
+        ));
+    }
     let (mut moved_normals, mut moved_tangents) = (false, false);
     for (k, (target, &w)) in targets.iter().zip(weights).enumerate() {
         if w == 0.0 {
@@ -185,6 +202,9 @@ where
     })
 }
 
+/// One JOINTS_n/WEIGHTS_n pair: per vertex its four joints and weights.
+type InfluenceSet = (Vec<[f32; 4]>, Vec<[f32; 4]>);
+
 /// Skins `data` by `node`'s skin at the joints' default transforms, into
 /// world space. `worlds` holds every node's world matrix.
 pub fn skin(
@@ -200,9 +220,19 @@ pub fn skin(
     };
     let matrices = joint_matrices(file, &skin, worlds)?;
     let count = data.positions.len();
-    // Every JOINTS_n with its WEIGHTS_n: indices and weights per vertex.
-    let mut influences: Vec<Vec<(usize, f32)>> = vec![Vec::new(); count];
+    // Each JOINTS_n/WEIGHTS_n set, read whole.
+    let mut sets: Vec<InfluenceSet> = Vec::new();
     for set in 0u32.. {
+        if set == MAX_SKIN_SETS {
+            if prim.get(&gltf::Semantic::Joints(set)).is_some() {
+                return Err(file.error(
+                    &format!("{pointer}/attributes/JOINTS_{set}"),
+                    format!("more than {MAX_SKIN_SETS} JOINTS_n sets"),
+                    "weft skins with at most 32 influences per vertex; re-export with fewer",
+                ));
+            }
+            break;
+        }
         let (Some(joints), Some(weights)) = (
             prim.get(&gltf::Semantic::Joints(set)),
             prim.get(&gltf::Semantic::Weights(set)),
@@ -246,11 +276,11 @@ pub fn skin(
                         "joint indices point into the skin's `joints`, weights are finite and ≥ 0; re-export the file",
                     ));
                 }
-                influences[v].push((joint, weight));
             }
         }
+        sets.push((j, w));
     }
-    if influences.iter().all(Vec::is_empty) {
+    if sets.is_empty() {
         return Err(file.error(
             &format!("{pointer}/attributes"),
             format!(
@@ -260,14 +290,21 @@ pub fn skin(
             "a skinned primitive names its joints and weights; re-export the file",
         ));
     }
-    for (v, list) in influences.iter().enumerate() {
-        let total: f32 = list.iter().map(|(_, w)| w).sum();
+    for v in 0..count {
+        // (joint, weight) of every influence on vertex v.
+        let influences = || {
+            sets.iter()
+                .flat_map(move |(j, w)| j[v].iter().zip(&w[v]))
+                .filter(|(_, w)| **w != 0.0)
+                .map(|(&j, &w)| (j as usize, w))
+        };
+        let total: f32 = influences().map(|(_, w)| w).sum();
         // No weight at all: the vertex stays where the bind pose puts it.
         if total <= 0.0 {
             continue;
         }
         let mut m = [[0.0f64; 4]; 4];
-        for &(joint, weight) in list {
+        for (joint, weight) in influences() {
             let share = f64::from(weight / total);
             for (col, joint_col) in m.iter_mut().zip(&matrices[joint]) {
                 for (x, y) in col.iter_mut().zip(joint_col) {
@@ -315,6 +352,13 @@ fn joint_matrices(
     worlds: &[Option<Mat4>],
 ) -> Result<Vec<Mat4>, GltfError> {
     let at = format!("/skins/{}", skin.index());
+    if skin.joints().len() > MAX_JOINTS {
+        return Err(file.error(
+            &format!("{at}/joints"),
+            format!("{} joints", skin.joints().len()),
+            "JOINTS_n index at most 65536 joints; re-export the file",
+        ));
+    }
     let joints: Vec<gltf::Node> = skin.joints().collect();
     let inverse_binds: Vec<Mat4> = match skin.inverse_bind_matrices() {
         None => vec![super::transform::IDENTITY; joints.len()],

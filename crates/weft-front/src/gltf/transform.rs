@@ -48,37 +48,36 @@ pub fn normal_matrix(m: &Mat4) -> ([[f64; 3]; 3], f64) {
     (cof, det)
 }
 
-/// Each node's world matrix (parents' transforms applied), `None` for a node
-/// whose parent chain is longer than the node count (a cycle: the scene
-/// walk reports it).
+/// Each node's world matrix (parents' transforms applied), walking down
+/// from the nodes no node names as a child: linear in the node count
+/// however deep the trees. A node no such walk reaches (one in a cycle) has
+/// `None`; the scene walk reports cycles.
 pub fn world_matrices(file: &GltfFile) -> Vec<Option<Mat4>> {
     let nodes: Vec<gltf::Node> = file.document.nodes().collect();
-    let mut parent = vec![None; nodes.len()];
+    let mut has_parent = vec![false; nodes.len()];
     for node in &nodes {
         for child in node.children() {
-            parent[child.index()] = Some(node.index());
+            has_parent[child.index()] = true;
         }
     }
-    let local: Vec<Mat4> = nodes
+    let local = |n: &gltf::Node| -> Mat4 { n.transform().matrix().map(|c| c.map(f64::from)) };
+    let mut world: Vec<Option<Mat4>> = vec![None; nodes.len()];
+    let mut stack: Vec<(usize, Mat4)> = nodes
         .iter()
-        .map(|n| n.transform().matrix().map(|c| c.map(f64::from)))
+        .filter(|n| !has_parent[n.index()])
+        .map(|n| (n.index(), local(n)))
         .collect();
-    (0..nodes.len())
-        .map(|i| {
-            let mut world = local[i];
-            let mut at = i;
-            for _ in 0..nodes.len() {
-                match parent[at] {
-                    None => return Some(world),
-                    Some(p) => {
-                        world = mul(&local[p], &world);
-                        at = p;
-                    }
-                }
-            }
-            None
-        })
-        .collect()
+    while let Some((i, m)) = stack.pop() {
+        // A node reached twice (shared by two parents) keeps its first.
+        if world[i].is_some() {
+            continue;
+        }
+        world[i] = Some(m);
+        for child in nodes[i].children() {
+            stack.push((child.index(), mul(&m, &local(&child))));
+        }
+    }
+    world
 }
 
 #[cfg(test)]
