@@ -160,7 +160,7 @@ impl GltfFile {
     /// ([`super::transform::world_matrices`]), computed once per file.
     pub fn node_worlds(&self) -> &[Option<super::transform::Mat4>] {
         self.node_worlds
-            .get_or_init(|| super::transform::world_matrices(self))
+            .get_or_init(|| super::transform::world_matrices(&self.document))
     }
 
     pub fn error(&self, pointer: &str, message: String, hint: &str) -> GltfError {

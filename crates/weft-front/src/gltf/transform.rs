@@ -2,8 +2,6 @@
 //! and each node's world matrix in the file's default state (its own TRS or
 //! matrix, no animation applied).
 
-use super::document::GltfFile;
-
 pub type Mat4 = [[f64; 4]; 4];
 
 pub const IDENTITY: Mat4 = [
@@ -52,8 +50,8 @@ pub fn normal_matrix(m: &Mat4) -> ([[f64; 3]; 3], f64) {
 /// from the nodes no node names as a child: linear in the node count
 /// however deep the trees. A node no such walk reaches (one in a cycle) has
 /// `None`; the scene walk reports cycles.
-pub fn world_matrices(file: &GltfFile) -> Vec<Option<Mat4>> {
-    let nodes: Vec<gltf::Node> = file.document.nodes().collect();
+pub fn world_matrices(document: &gltf::Document) -> Vec<Option<Mat4>> {
+    let nodes: Vec<gltf::Node> = document.nodes().collect();
     let mut has_parent = vec![false; nodes.len()];
     for node in &nodes {
         for child in node.children() {
@@ -83,6 +81,31 @@ pub fn world_matrices(file: &GltfFile) -> Vec<Option<Mat4>> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A chain of 50 000 nodes, each 1 along x from its parent: the walk
+    /// is linear (one step per parent link would be 1.25 × 10⁹ steps).
+    #[test]
+    fn world_matrices_of_a_deep_chain() {
+        let n = 50_000;
+        let nodes: Vec<serde_json::Value> = (0..n)
+            .map(|i| {
+                let mut node = serde_json::json!({ "translation": [1.0, 0.0, 0.0] });
+                if i + 1 < n {
+                    node["children"] = serde_json::json!([i + 1]);
+                }
+                node
+            })
+            .collect();
+        let json = serde_json::json!({
+            "asset": { "version": "2.0" }, "nodes": nodes,
+            "scenes": [ { "nodes": [0] } ],
+        });
+        let gltf = gltf::Gltf::from_slice(&serde_json::to_vec(&json).unwrap()).unwrap();
+        let worlds = world_matrices(&gltf.document);
+        assert_eq!(worlds.len(), n);
+        let last = worlds[n - 1].expect("reached");
+        assert_eq!(last[3][0], n as f64);
+    }
 
     #[test]
     fn normals_follow_a_non_uniform_scale() {
