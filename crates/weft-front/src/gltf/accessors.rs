@@ -6,14 +6,164 @@
 //! `KHR_texture_transform`) carries the dequantisation's scale, so what is
 //! read here is the stored value, normalised when the accessor says so.
 //!
-//! Callers check the accessor first (`meshes::check_accessor`): its type is
-//! one the attribute allows and every byte it names exists.
+//! [`check_accessor`] comes first: the accessor's type is one the attribute
+//! allows and every byte it names exists; then [`read_f32`] reads it.
 
-use super::document::GltfFile;
-use gltf::accessor::{DataType, Item, Iter};
+use super::GltfError;
+use super::document::{GltfFile, MESH_QUANTIZATION};
+use gltf::accessor::{DataType, Dimensions, Item, Iter};
 
-/// The extension that lets attributes use integer components.
-pub const MESH_QUANTIZATION: &str = "KHR_mesh_quantization";
+/// The most vertices (and indices) one primitive may have.
+pub const MAX_PRIMITIVE_VERTICES: usize = 1 << 24;
+
+/// What an accessor's `normalized` may be for one component type.
+#[derive(Clone, Copy)]
+pub enum Norm {
+    /// Integers read as fractions (normalised colours, core texture coordinates).
+    Yes,
+    /// Integers read as their values (KHR_mesh_quantization's positions and
+    /// texture coordinates may be either).
+    Either,
+}
+
+impl Norm {
+    fn accepts(self, normalized: bool) -> bool {
+        match self {
+            Norm::Yes => normalized,
+            Norm::Either => true,
+        }
+    }
+}
+
+/// One accepted (component type, type, `normalized`). Floats and indices
+/// accept either flag: it does not change what they read.
+pub type Allowed = (DataType, Dimensions, Norm);
+
+fn element_size(data_type: DataType, dims: Dimensions) -> usize {
+    data_type.size() * dims.multiplicity()
+}
+
+/// Checks an accessor's bytes lie where the file says: a view inside its
+/// buffer, every element (stride apart) inside the view, sparse indices and
+/// values inside theirs. `allowed` lists the (component type, type,
+/// `normalized`) the semantic may have.
+pub fn check_accessor(
+    file: &GltfFile,
+    accessor: &gltf::Accessor,
+    allowed: &[Allowed],
+    what: &str,
+) -> Result<(), GltfError> {
+    let pointer = format!("/accessors/{}", accessor.index());
+    let err = |message: String| {
+        file.error(
+            &pointer,
+            message,
+            "re-export the file; the accessor does not fit its data",
+        )
+    };
+    let (data_type, dims) = (accessor.data_type(), accessor.dimensions());
+    let normalized = accessor.normalized();
+    if !allowed
+        .iter()
+        .any(|a| a.0 == data_type && a.1 == dims && a.2.accepts(normalized))
+    {
+        let normalised = if normalized && data_type != DataType::F32 {
+            " normalised"
+        } else {
+            ""
+        };
+        return Err(file.error(
+            &pointer,
+            format!(
+                "{what}: a {dims:?} of{normalised} {data_type:?}, which glTF does not allow here"
+            ),
+            "glTF 2.0 § 3.7.2.1 lists each attribute's accessor types; \
+             KHR_mesh_quantization (declared in extensionsUsed) adds integer ones",
+        ));
+    }
+    let count = accessor.count();
+    if count == 0 || count > MAX_PRIMITIVE_VERTICES {
+        return Err(err(format!(
+            "{what}: {count} elements; weft reads 1 to {MAX_PRIMITIVE_VERTICES} per primitive"
+        )));
+    }
+    let size = element_size(data_type, dims);
+    let fits = |view: gltf::buffer::View,
+                offset: usize,
+                count: usize,
+                size: usize|
+     -> Result<(), GltfError> {
+        let view_pointer = format!("/bufferViews/{}", view.index());
+        let buffer_len = file.buffers[view.buffer().index()].len();
+        if view
+            .offset()
+            .checked_add(view.length())
+            .is_none_or(|end| end > buffer_len)
+        {
+            return Err(file.error(
+                &view_pointer,
+                format!(
+                    "the view's {} bytes at {} run past its buffer's {buffer_len}",
+                    view.length(),
+                    view.offset()
+                ),
+                "re-export the file",
+            ));
+        }
+        let stride = view.stride().unwrap_or(size);
+        if stride < size {
+            return Err(file.error(
+                &view_pointer,
+                format!("byteStride {stride} is below the element size {size}"),
+                "re-export the file",
+            ));
+        }
+        let end = (count - 1)
+            .checked_mul(stride)
+            .and_then(|n| n.checked_add(size))
+            .and_then(|n| n.checked_add(offset));
+        if end.is_none_or(|end| end > view.length()) {
+            return Err(err(format!(
+                "{what}: {count} elements of {size} bytes (stride {stride}) at offset {offset} run past its view's {} bytes",
+                view.length()
+            )));
+        }
+        Ok(())
+    };
+    match accessor.view() {
+        Some(view) => fits(view, accessor.offset(), count, size)?,
+        // glTF reads such an accessor as zeros (§ 3.6.2.1): a placeholder
+        // no exporter writes for data it means to be drawn.
+        None if accessor.sparse().is_none() => {
+            return Err(file.error(
+                &pointer,
+                format!(
+                    "{what}: no bufferView and no sparse values, so glTF reads every element as zero"
+                ),
+                "weft does not draw an attribute or index list of zeros; re-export the file with the mesh's data",
+            ));
+        }
+        None => {}
+    }
+    if let Some(sparse) = accessor.sparse() {
+        let n = sparse.count();
+        if n == 0 || n > count {
+            return Err(err(format!(
+                "{what}: {n} sparse values for {count} elements"
+            )));
+        }
+        let indices = sparse.indices();
+        fits(
+            indices.view(),
+            indices.offset(),
+            n,
+            indices.index_type().size(),
+        )?;
+        let values = sparse.values();
+        fits(values.view(), values.offset(), n, size)?;
+    }
+    Ok(())
+}
 
 /// Whether the file declares `KHR_mesh_quantization` (it must, to use it).
 pub fn quantized(file: &GltfFile) -> bool {

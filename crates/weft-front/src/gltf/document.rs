@@ -27,8 +27,12 @@ pub const SUPPORTED_EXTENSIONS: &[&str] = &[
     "KHR_materials_specular",
     "KHR_materials_emissive_strength",
     "KHR_texture_transform",
-    super::accessors::MESH_QUANTIZATION,
+    MESH_QUANTIZATION,
 ];
+
+/// The extension that lets attributes use integer components
+/// (`accessors` reads them).
+pub const MESH_QUANTIZATION: &str = "KHR_mesh_quantization";
 
 /// An opened glTF: the checked document and every buffer's bytes.
 pub struct GltfFile {
@@ -291,7 +295,7 @@ fn validate(root: &json::Root, path: &Path) -> Result<(), GltfError> {
 ///   without `bufferView` (and without `sparse`) is all zeros (§ 3.6.2.1), and
 ///   a texture without `source` takes its image from an extension (§ 5.29).
 ///   weft checks both where it reads them, with their own errors
-///   (`meshes::check_accessor`, `scene::images::gltf_texture`), so a file
+///   (`accessors::check_accessor`, `scene::images::gltf_texture`), so a file
 ///   whose drawn primitives and materials do not use them opens.
 /// - A required extension gltf-json does not know (`KHR_mesh_quantization`):
 ///   [`check_extensions`] has already refused every one weft does not honour.

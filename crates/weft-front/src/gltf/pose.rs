@@ -13,12 +13,11 @@
 //!   space, so the instance that draws it has the identity matrix (glTF
 //!   ignores a skinned node's own transform).
 //!
-//! Every accessor is checked as `meshes` checks the primitive's own.
+//! Every accessor is checked as the primitive's own are ([`check_accessor`]).
 
 use super::GltfError;
-use super::accessors::{self, read_f32};
+use super::accessors::{self, Allowed, Norm, check_accessor, read_f32};
 use super::document::GltfFile;
-use super::meshes::{Allowed, Norm, check_accessor};
 use super::transform::{Mat4, mul, normal_matrix, normalize, transform_point, transform_vector};
 use gltf::accessor::{DataType, Dimensions};
 use weft_meta::mesh::MeshData;
