@@ -151,7 +151,7 @@ struct Attributes<'a> {
     tangent: Option<gltf::Accessor<'a>>,
     uv0: Option<gltf::Accessor<'a>>,
     uv1: Option<gltf::Accessor<'a>>,
-    color: bool,
+    color: Option<gltf::Accessor<'a>>,
 }
 
 impl<'a> Attributes<'a> {
@@ -215,7 +215,7 @@ impl<'a> Attributes<'a> {
             tangent,
             uv0,
             uv1,
-            color: color.is_some(),
+            color,
         })
     }
 }
@@ -286,19 +286,24 @@ fn read_streams(
         ));
     }
     if let Some(normal) = &attributes.normal {
-        data.normals = accessors::read_f32(file, normal)
-            .ok_or_else(|| unreadable("NORMAL"))?
+        data.normals = read_finite::<3>(file, normal, pointer, "NORMAL")?
             .into_iter()
             .map(|n| unit_or(n, [0.0, 0.0, 1.0]))
             .collect();
     }
     if let Some(uv0) = &attributes.uv0 {
-        data.uv0 = accessors::read_f32(file, uv0).ok_or_else(|| unreadable("TEXCOORD_0"))?;
+        data.uv0 = read_finite(file, uv0, pointer, "TEXCOORD_0")?;
     }
     if let Some(uv1) = &attributes.uv1 {
-        data.uv1 = accessors::read_f32(file, uv1).ok_or_else(|| unreadable("TEXCOORD_1"))?;
+        data.uv1 = read_finite(file, uv1, pointer, "TEXCOORD_1")?;
     }
-    if attributes.color {
+    if let Some(color) = &attributes.color {
+        // COLOR_0 is VEC3 or VEC4: checked as what it is, read by gltf.
+        if color.dimensions() == Dimensions::Vec3 {
+            read_finite::<3>(file, color, pointer, "COLOR_0")?;
+        } else {
+            read_finite::<4>(file, color, pointer, "COLOR_0")?;
+        }
         data.colors = reader
             .read_colors(0)
             .ok_or_else(|| unreadable("COLOR_0"))?
@@ -306,16 +311,48 @@ fn read_streams(
             .collect();
     }
     if let (Some(tangent), Some(_)) = (&attributes.tangent, &attributes.normal) {
-        data.tangents = accessors::read_f32(file, tangent)
-            .ok_or_else(|| unreadable("TANGENT"))?
+        data.tangents = read_finite::<4>(file, tangent, pointer, "TANGENT")?
             .into_iter()
-            .map(|t: [f32; 4]| {
+            .map(|t| {
                 let [x, y, z] = unit_or([t[0], t[1], t[2]], [1.0, 0.0, 0.0]);
                 [x, y, z, if t[3] < 0.0 { -1.0 } else { 1.0 }]
             })
             .collect();
     }
     Ok((data, indices))
+}
+
+/// A stream read whole and checked finite: a NaN or an infinity in the
+/// file is an error at its accessor, not a value drawn.
+fn read_finite<const N: usize>(
+    file: &GltfFile,
+    accessor: &gltf::Accessor,
+    pointer: &str,
+    what: &str,
+) -> Result<Vec<[f32; N]>, GltfError>
+where
+    [f32; N]: gltf::accessor::Item,
+    [i8; N]: gltf::accessor::Item,
+    [u8; N]: gltf::accessor::Item,
+    [i16; N]: gltf::accessor::Item,
+    [u16; N]: gltf::accessor::Item,
+{
+    let at = format!("/accessors/{}", accessor.index());
+    let values = accessors::read_f32::<N>(file, accessor).ok_or_else(|| {
+        file.error(
+            &at,
+            format!("{pointer} {what} could not be read"),
+            "re-export the file",
+        )
+    })?;
+    if values.iter().flatten().any(|x| !x.is_finite()) {
+        return Err(file.error(
+            &at,
+            format!("{pointer} {what}: a value is not finite"),
+            "re-export the file",
+        ));
+    }
+    Ok(values)
 }
 
 /// A strip's or a fan's triangles as a list, in glTF 2.0's order
@@ -366,7 +403,7 @@ fn complete_streams(
     let provided = Provided {
         uv0: attributes.uv0.is_some(),
         uv1: attributes.uv1.is_some(),
-        color: attributes.color,
+        color: attributes.color.is_some(),
         tangent: attributes.tangent.is_some() || attributes.uv0.is_some(),
     };
     let v = data.positions.len();
@@ -475,6 +512,17 @@ impl mikktspace::Geometry for Mikk<'_> {
 /// specified, client implementations SHOULD calculate tangents using
 /// default MikkTSpace algorithms"), w the bitangent sign.
 fn mikktspace_tangents(data: &MeshData, indices: &[u32]) -> Vec<[f32; 4]> {
+    // mikktspace 0.3 sets aside triangles with two equal corner positions
+    // and, when none is left, underflows a count (a panic here, memory
+    // past its buffers in a release build): such a mesh has nothing to give
+    // tangents to.
+    let proper = indices.chunks_exact(3).any(|t| {
+        let [a, b, c] = [0, 1, 2].map(|k| data.positions[t[k] as usize]);
+        a != b && a != c && b != c
+    });
+    if !proper {
+        return data.normals.iter().map(|n| any_tangent(*n)).collect();
+    }
     let mut m = Mikk {
         data,
         indices,
@@ -498,6 +546,24 @@ fn mikktspace_tangents(data: &MeshData, indices: &[u32]) -> Vec<[f32; 4]> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Found by the fuzz smoke run: a primitive whose every triangle has
+    /// two equal corners made mikktspace underflow; its tangents are now
+    /// any unit vector perpendicular to the normal.
+    #[test]
+    fn tangents_of_a_mesh_without_area_are_made_without_mikktspace() {
+        let data = MeshData {
+            positions: vec![[0.0, 0.0, 0.0], [0.0, 0.0, 0.0], [1.0, 0.0, 0.0]],
+            normals: vec![[0.0, 0.0, 1.0]; 3],
+            uv0: vec![[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]],
+            ..MeshData::default()
+        };
+        let tangents = mikktspace_tangents(&data, &[0, 1, 2]);
+        assert_eq!(tangents.len(), 3);
+        for t in tangents {
+            assert!((t[0] * t[0] + t[1] * t[1] + t[2] * t[2] - 1.0).abs() < 1e-6 && t[2] == 0.0);
+        }
+    }
 
     #[test]
     fn strips_and_fans_become_lists_with_the_first_triangles_winding() {

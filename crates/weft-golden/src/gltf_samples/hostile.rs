@@ -234,6 +234,34 @@ pub fn hostile() -> Vec<(&'static str, Vec<u8>, &'static str, &'static str)> {
         "morph weights for the 2 targets",
     );
     case(
+        "normal_not_finite",
+        &|v| {
+            // The positions' bytes again, as normals, with one NaN:
+            // f32 0x7fc00000 in the second buffer.
+            let mut normals: Vec<u8> = [[0.0f32, 0.0, 1.0]; 3]
+                .iter()
+                .flatten()
+                .flat_map(|x| x.to_le_bytes())
+                .collect();
+            normals[8..12].copy_from_slice(&f32::NAN.to_le_bytes());
+            v["buffers"]
+                .as_array_mut()
+                .expect("buffers")
+                .push(json!({ "byteLength": 36, "uri": format!("data:application/octet-stream;base64,{}", b64(&normals)) }));
+            v["bufferViews"]
+                .as_array_mut()
+                .expect("views")
+                .push(json!({ "buffer": 1, "byteLength": 36 }));
+            v["accessors"]
+                .as_array_mut()
+                .expect("accessors")
+                .push(json!({ "bufferView": 2, "componentType": 5126, "count": 3, "type": "VEC3" }));
+            v["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = json!(2);
+        },
+        "/accessors/2",
+        "not finite",
+    );
+    case(
         "positions_as_bytes",
         &|v| {
             v["accessors"][0]["componentType"] = json!(5121);
