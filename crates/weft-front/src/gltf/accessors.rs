@@ -7,7 +7,7 @@
 //! read here is the stored value, normalised when the accessor says so.
 //!
 //! [`check_accessor`] comes first: the accessor's type is one the attribute
-//! allows and every byte it names exists; then [`read_f32`] reads it.
+//! allows and every byte it names exists; then [`read_finite`] reads it.
 
 use super::GltfError;
 use super::document::{GltfFile, MESH_QUANTIZATION};
@@ -214,7 +214,7 @@ where
 
 /// `accessor`'s elements as f32 vectors of N components. `None` when its
 /// bytes cannot be read (the caller's check makes that an error).
-pub fn read_f32<const N: usize>(file: &GltfFile, accessor: &gltf::Accessor) -> Option<Vec<[f32; N]>>
+fn read_f32<const N: usize>(file: &GltfFile, accessor: &gltf::Accessor) -> Option<Vec<[f32; N]>>
 where
     [f32; N]: Item,
     [i8; N]: Item,
@@ -231,6 +231,51 @@ where
         // No vertex attribute may be u32 (§ 3.7.2.1); indices are read apart.
         DataType::U32 => None,
     }
+}
+
+/// What an attribute is read as: `[f32; 2]`, `[f32; 3]` or `[f32; 4]`.
+pub trait Vector: Sized + Copy + AsRef<[f32]> {
+    fn read(file: &GltfFile, accessor: &gltf::Accessor) -> Option<Vec<Self>>;
+}
+
+macro_rules! vectors {
+    ($($n:literal),*) => {$(
+        impl Vector for [f32; $n] {
+            fn read(file: &GltfFile, accessor: &gltf::Accessor) -> Option<Vec<Self>> {
+                read_f32::<$n>(file, accessor)
+            }
+        }
+    )*};
+}
+vectors!(2, 3, 4);
+
+/// `accessor` (checked already) read whole as f32 vectors. A NaN or an
+/// infinity is an error at the accessor, not a value drawn; `what` names
+/// the stream in the message.
+pub fn read_finite<V: Vector>(
+    file: &GltfFile,
+    accessor: &gltf::Accessor,
+    what: &str,
+) -> Result<Vec<V>, GltfError> {
+    let at = format!("/accessors/{}", accessor.index());
+    let values = V::read(file, accessor).ok_or_else(|| {
+        file.error(
+            &at,
+            format!("{what} could not be read"),
+            "re-export the file",
+        )
+    })?;
+    if values
+        .iter()
+        .any(|v| v.as_ref().iter().any(|x| !x.is_finite()))
+    {
+        return Err(file.error(
+            &at,
+            format!("{what}: a value is not finite"),
+            "re-export the file",
+        ));
+    }
+    Ok(values)
 }
 
 /// The bounds of a primitive's positions from its POSITION accessor's `min`

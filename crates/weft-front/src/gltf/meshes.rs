@@ -237,18 +237,16 @@ fn read_streams(
             "re-export the file",
         )
     };
+    // Every stream is checked finite as it is read: a NaN or an infinity
+    // is an error at its accessor.
     let mut data = MeshData {
-        positions: accessors::read_f32(file, &attributes.position)
-            .ok_or_else(|| unreadable("POSITION"))?,
+        positions: accessors::read_finite(
+            file,
+            &attributes.position,
+            &format!("{pointer} POSITION"),
+        )?,
         ..MeshData::default()
     };
-    if data.positions.iter().flatten().any(|x| !x.is_finite()) {
-        return Err(file.error(
-            &format!("/accessors/{}", attributes.position.index()),
-            "a position is not finite".into(),
-            "re-export the file",
-        ));
-    }
     let indices: Vec<u32> = match prim.indices() {
         Some(_) => reader
             .read_indices()
@@ -286,23 +284,24 @@ fn read_streams(
         ));
     }
     if let Some(normal) = &attributes.normal {
-        data.normals = read_finite::<3>(file, normal, pointer, "NORMAL")?
-            .into_iter()
-            .map(|n| unit_or(n, [0.0, 0.0, 1.0]))
-            .collect();
+        data.normals =
+            accessors::read_finite::<[f32; 3]>(file, normal, &format!("{pointer} NORMAL"))?
+                .into_iter()
+                .map(|n| unit_or(n, [0.0, 0.0, 1.0]))
+                .collect();
     }
     if let Some(uv0) = &attributes.uv0 {
-        data.uv0 = read_finite(file, uv0, pointer, "TEXCOORD_0")?;
+        data.uv0 = accessors::read_finite(file, uv0, &format!("{pointer} TEXCOORD_0"))?;
     }
     if let Some(uv1) = &attributes.uv1 {
-        data.uv1 = read_finite(file, uv1, pointer, "TEXCOORD_1")?;
+        data.uv1 = accessors::read_finite(file, uv1, &format!("{pointer} TEXCOORD_1"))?;
     }
     if let Some(color) = &attributes.color {
         // COLOR_0 is VEC3 or VEC4: checked as what it is, read by gltf.
         if color.dimensions() == Dimensions::Vec3 {
-            read_finite::<3>(file, color, pointer, "COLOR_0")?;
+            accessors::read_finite::<[f32; 3]>(file, color, &format!("{pointer} COLOR_0"))?;
         } else {
-            read_finite::<4>(file, color, pointer, "COLOR_0")?;
+            accessors::read_finite::<[f32; 4]>(file, color, &format!("{pointer} COLOR_0"))?;
         }
         data.colors = reader
             .read_colors(0)
@@ -311,48 +310,16 @@ fn read_streams(
             .collect();
     }
     if let (Some(tangent), Some(_)) = (&attributes.tangent, &attributes.normal) {
-        data.tangents = read_finite::<4>(file, tangent, pointer, "TANGENT")?
-            .into_iter()
-            .map(|t| {
-                let [x, y, z] = unit_or([t[0], t[1], t[2]], [1.0, 0.0, 0.0]);
-                [x, y, z, if t[3] < 0.0 { -1.0 } else { 1.0 }]
-            })
-            .collect();
+        data.tangents =
+            accessors::read_finite::<[f32; 4]>(file, tangent, &format!("{pointer} TANGENT"))?
+                .into_iter()
+                .map(|t| {
+                    let [x, y, z] = unit_or([t[0], t[1], t[2]], [1.0, 0.0, 0.0]);
+                    [x, y, z, if t[3] < 0.0 { -1.0 } else { 1.0 }]
+                })
+                .collect();
     }
     Ok((data, indices))
-}
-
-/// A stream read whole and checked finite: a NaN or an infinity in the
-/// file is an error at its accessor, not a value drawn.
-fn read_finite<const N: usize>(
-    file: &GltfFile,
-    accessor: &gltf::Accessor,
-    pointer: &str,
-    what: &str,
-) -> Result<Vec<[f32; N]>, GltfError>
-where
-    [f32; N]: gltf::accessor::Item,
-    [i8; N]: gltf::accessor::Item,
-    [u8; N]: gltf::accessor::Item,
-    [i16; N]: gltf::accessor::Item,
-    [u16; N]: gltf::accessor::Item,
-{
-    let at = format!("/accessors/{}", accessor.index());
-    let values = accessors::read_f32::<N>(file, accessor).ok_or_else(|| {
-        file.error(
-            &at,
-            format!("{pointer} {what} could not be read"),
-            "re-export the file",
-        )
-    })?;
-    if values.iter().flatten().any(|x| !x.is_finite()) {
-        return Err(file.error(
-            &at,
-            format!("{pointer} {what}: a value is not finite"),
-            "re-export the file",
-        ));
-    }
-    Ok(values)
 }
 
 /// A strip's or a fan's triangles as a list, in glTF 2.0's order

@@ -16,7 +16,7 @@
 //! Every accessor is checked as the primitive's own are ([`check_accessor`]).
 
 use super::GltfError;
-use super::accessors::{self, Allowed, Norm, check_accessor, read_f32};
+use super::accessors::{self, Allowed, Norm, Vector, check_accessor, read_finite};
 use super::document::GltfFile;
 use super::transform::{Mat4, mul, normal_matrix, normalize, transform_point, transform_vector};
 use gltf::accessor::{DataType, Dimensions};
@@ -106,7 +106,7 @@ pub fn morph(
                 Some(a) => {
                     let what = format!("{pointer} target {k} {stream}");
                     let types = delta_types(quantized, position);
-                    read_checked::<3>(file, &a, &types, count, &what).map(Some)
+                    read_checked::<[f32; 3]>(file, &a, &types, count, &what).map(Some)
                 }
             }
         };
@@ -169,36 +169,22 @@ fn add<'v>(values: impl Iterator<Item = &'v mut [f32]>, deltas: &[[f32; 3]], w: 
 }
 
 /// An accessor checked (type, byte ranges, one element per vertex) and read.
-fn read_checked<const N: usize>(
+fn read_checked<V: Vector>(
     file: &GltfFile,
     accessor: &gltf::Accessor,
     allowed: &[Allowed],
     count: usize,
     what: &str,
-) -> Result<Vec<[f32; N]>, GltfError>
-where
-    [f32; N]: gltf::accessor::Item,
-    [i8; N]: gltf::accessor::Item,
-    [u8; N]: gltf::accessor::Item,
-    [i16; N]: gltf::accessor::Item,
-    [u16; N]: gltf::accessor::Item,
-{
+) -> Result<Vec<V>, GltfError> {
     check_accessor(file, accessor, allowed, what)?;
-    let pointer = format!("/accessors/{}", accessor.index());
     if accessor.count() != count {
         return Err(file.error(
-            &pointer,
+            &format!("/accessors/{}", accessor.index()),
             format!("{what} has {} elements, POSITION {count}", accessor.count()),
             "every attribute of a primitive has one element per vertex",
         ));
     }
-    read_f32(file, accessor).ok_or_else(|| {
-        file.error(
-            &pointer,
-            format!("{what} could not be read"),
-            "re-export the file",
-        )
-    })
+    read_finite(file, accessor, what)
 }
 
 /// One JOINTS_n/WEIGHTS_n pair: per vertex its four joints and weights.

@@ -252,10 +252,9 @@ pub fn hostile() -> Vec<(&'static str, Vec<u8>, &'static str, &'static str)> {
                 .as_array_mut()
                 .expect("views")
                 .push(json!({ "buffer": 1, "byteLength": 36 }));
-            v["accessors"]
-                .as_array_mut()
-                .expect("accessors")
-                .push(json!({ "bufferView": 2, "componentType": 5126, "count": 3, "type": "VEC3" }));
+            v["accessors"].as_array_mut().expect("accessors").push(
+                json!({ "bufferView": 2, "componentType": 5126, "count": 3, "type": "VEC3" }),
+            );
             v["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = json!(2);
         },
         "/accessors/2",
