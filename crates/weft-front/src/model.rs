@@ -34,7 +34,7 @@ pub struct Material {
     /// WGSL files in composition order: includes (dependencies first), then the material source.
     pub sources: Vec<SourceFile>,
     pub requires: Vec<VertexAttribute>,
-    /// Where `requires` is written (or [material] when absent).
+    /// Where `requires` is written (or `[material]` when absent).
     pub requires_span: Span,
     pub groups: Vec<Group>,
     pub params: Vec<Param>,

@@ -444,7 +444,7 @@ fn value_span(table: &Value, key: &str) -> Option<Span> {
 /// A string value and where it is written.
 pub type NamedSpan = (String, Span);
 
-/// The `source` and `includes` entries of [material], with spans, for `includes.rs`.
+/// The `source` and `includes` entries of `[material]`, with spans, for `includes.rs`.
 pub fn source_entries(text: &str) -> (Option<NamedSpan>, Vec<NamedSpan>) {
     let Ok(doc) = DeTable::parse(text) else {
         return (None, Vec::new());
