@@ -14,6 +14,7 @@ use super::GltfError;
 use super::accessors::{self, Allowed, Norm, check_accessor};
 use super::document::GltfFile;
 use super::pose;
+use super::transform::unit_or;
 use gltf::accessor::{DataType, Dimensions};
 use gltf::mesh::{Mode, Semantic};
 use weft_meta::mesh::MeshData;
@@ -297,17 +298,16 @@ fn read_streams(
         data.uv1 = accessors::read_finite(file, uv1, &format!("{pointer} TEXCOORD_1"))?;
     }
     if let Some(color) = &attributes.color {
-        // COLOR_0 is VEC3 or VEC4: checked as what it is, read by gltf.
-        if color.dimensions() == Dimensions::Vec3 {
-            accessors::read_finite::<[f32; 3]>(file, color, &format!("{pointer} COLOR_0"))?;
+        // COLOR_0 is RGB (alpha 1) or RGBA.
+        let what = format!("{pointer} COLOR_0");
+        data.colors = if color.dimensions() == Dimensions::Vec3 {
+            accessors::read_finite::<[f32; 3]>(file, color, &what)?
+                .into_iter()
+                .map(|[r, g, b]| [r, g, b, 1.0])
+                .collect()
         } else {
-            accessors::read_finite::<[f32; 4]>(file, color, &format!("{pointer} COLOR_0"))?;
-        }
-        data.colors = reader
-            .read_colors(0)
-            .ok_or_else(|| unreadable("COLOR_0"))?
-            .into_rgba_f32()
-            .collect();
+            accessors::read_finite(file, color, &what)?
+        };
     }
     if let (Some(tangent), Some(_)) = (&attributes.tangent, &attributes.normal) {
         data.tangents =
@@ -388,19 +388,6 @@ fn complete_streams(
         data,
         provided,
         generated,
-    }
-}
-
-/// `v` as it is when unit length (glTF requires unit normals and tangents:
-/// kept bit for bit), normalised when not, `fallback` when it has no direction.
-fn unit_or(v: [f32; 3], fallback: [f32; 3]) -> [f32; 3] {
-    let len = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
-    if (len - 1.0).abs() < 1e-4 {
-        v
-    } else if len.is_finite() && len > 1e-12 {
-        v.map(|x| x / len)
-    } else {
-        fallback
     }
 }
 

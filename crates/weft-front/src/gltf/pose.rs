@@ -18,7 +18,9 @@
 use super::GltfError;
 use super::accessors::{self, Allowed, Norm, Vector, check_accessor, read_finite};
 use super::document::GltfFile;
-use super::transform::{Mat4, mul, normal_matrix, normalize, transform_point, transform_vector};
+use super::transform::{
+    Mat4, mul, normal_matrix, normalize, transform_point, transform_vector, unit_or,
+};
 use gltf::accessor::{DataType, Dimensions};
 use weft_meta::mesh::MeshData;
 
@@ -130,21 +132,16 @@ pub fn morph(
     // Displaced normals and tangents are directions again.
     if moved_normals {
         for n in &mut data.normals {
-            *n = unit(*n, [0.0, 0.0, 1.0]);
+            *n = unit_or(*n, [0.0, 0.0, 1.0]);
         }
     }
     if moved_tangents {
         for t in &mut data.tangents {
-            let [x, y, z] = unit([t[0], t[1], t[2]], [1.0, 0.0, 0.0]);
+            let [x, y, z] = unit_or([t[0], t[1], t[2]], [1.0, 0.0, 0.0]);
             *t = [x, y, z, t[3]];
         }
     }
     finite_positions(file, data, pointer)
-}
-
-/// `v` at unit length, `fallback` when it has none.
-fn unit(v: [f32; 3], fallback: [f32; 3]) -> [f32; 3] {
-    normalize(v.map(f64::from)).map_or(fallback, |u| u.map(|x| x as f32))
 }
 
 /// The accessor types a morph target's displacements may have: float, and

@@ -29,6 +29,19 @@ pub fn normalize(v: [f64; 3]) -> Option<[f64; 3]> {
     (len.is_finite() && len > 1e-12).then(|| v.map(|x| x / len))
 }
 
+/// `v` as it is when unit length (glTF requires unit normals and tangents:
+/// kept bit for bit), normalised when not, `fallback` when it has no direction.
+pub fn unit_or(v: [f32; 3], fallback: [f32; 3]) -> [f32; 3] {
+    let len = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+    if (len - 1.0).abs() < 1e-4 {
+        v
+    } else if len.is_finite() && len > 1e-12 {
+        v.map(|x| x / len)
+    } else {
+        fallback
+    }
+}
+
 /// The matrix that carries normals with `m` (its upper 3×3's cofactors: the
 /// inverse transpose times the determinant, whose scale normalising
 /// removes), and the determinant's sign (a mirror flips the bitangent).
