@@ -1030,3 +1030,66 @@ fn morph_targets_blend_with_the_default_weights() {
         }
     }
 }
+
+/// `EXT_mesh_gpu_instancing`: each copy is an instance of the scene whose
+/// matrix is the node's world transform after the copy's own translation ·
+/// rotation · scale, all copies drawing the one mesh; a plain node still
+/// draws once. The matrices are written out by hand from the sample's
+/// numbers (column-major).
+#[test]
+fn gpu_instances_become_scene_instances() {
+    let dir = tempfile::tempdir().unwrap();
+    let (meta, _) = build_glb(dir.path(), "copies", gltf_samples::instanced_triangle());
+    let names: Vec<&str> = meta.instances.iter().map(|i| i.name.as_str()).collect();
+    assert_eq!(names, ["copies_i0", "copies_i1", "copies_i2", "single"]);
+    let [x, y, z] = gltf_samples::INSTANCED_NODE_AT;
+    let want: [[f32; 16]; 3] = [
+        [1., 0., 0., 0., 0., 1., 0., 0., 0., 0., 1., 0., x, y, z, 1.],
+        [
+            1.,
+            0.,
+            0.,
+            0.,
+            0.,
+            1.,
+            0.,
+            0.,
+            0.,
+            0.,
+            1.,
+            0.,
+            x + 2.,
+            y,
+            z,
+            1.,
+        ],
+        // 90° about +Z, then × 2: x → 2y, y → −2x.
+        [
+            0.,
+            2.,
+            0.,
+            0.,
+            -2.,
+            0.,
+            0.,
+            0.,
+            0.,
+            0.,
+            2.,
+            0.,
+            x,
+            y + 3.,
+            z,
+            1.,
+        ],
+    ];
+    for (k, want) in want.iter().enumerate() {
+        let got = meta.instances[k].transform.model;
+        assert!(
+            got.iter().zip(want).all(|(g, w)| (g - w).abs() < 1e-5),
+            "instance {k}: {got:?}, want {want:?}"
+        );
+        assert_eq!(meta.instances[k].mesh, meta.instances[3].mesh, "one mesh");
+    }
+    assert_eq!(meta.instances[3].transform.model[12], -3.0);
+}

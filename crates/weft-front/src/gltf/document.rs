@@ -28,6 +28,7 @@ pub const SUPPORTED_EXTENSIONS: &[&str] = &[
     "KHR_materials_emissive_strength",
     "KHR_texture_transform",
     MESH_QUANTIZATION,
+    super::instancing::GPU_INSTANCING,
 ];
 
 /// The extension that lets attributes use integer components

@@ -15,6 +15,7 @@
 
 pub mod accessors;
 pub mod document;
+pub mod instancing;
 pub mod materials;
 pub mod meshes;
 pub mod pose;

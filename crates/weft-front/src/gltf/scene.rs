@@ -8,6 +8,7 @@
 //! `weft build --scene x.glb --print-manifest` shows it.
 
 use super::document::GltfFile;
+use super::instancing::{GPU_INSTANCING, instance_transforms};
 use super::materials::{MaterialMapping, float, map_material, toml_string};
 use super::transform::{IDENTITY, Mat4, mul, normalize, transform_point};
 use super::{GltfError, Warnings};
@@ -192,24 +193,39 @@ fn drawn_primitives(file: &GltfFile) -> Result<(Vec<Draw>, Placed), GltfError> {
                 &format!("node{i}"),
             );
             let count = mesh.primitives().count();
-            for prim in mesh.primitives() {
-                let name = if count > 1 {
-                    format!("{base}_p{}", prim.index())
-                } else {
-                    base.clone()
-                };
-                let skinned = node.skin().is_some();
-                draws.push(Draw {
-                    name,
-                    mesh: mesh.index(),
-                    primitive: prim.index(),
-                    material: prim.material().index(),
-                    world: if skinned { IDENTITY } else { world },
-                    posing_node: super::pose::node_poses(&node).then_some(i),
-                    skinned,
-                    variant: None,
-                });
+            // EXT_mesh_gpu_instancing: a copy per instance, each placed by
+            // the node's world transform after its own.
+            let room = MAX_INSTANCES.saturating_sub(draws.len()) / count.max(1);
+            let copies = match instance_transforms(file, &node, room)? {
+                Some(copies) => copies
+                    .iter()
+                    .enumerate()
+                    .map(|(k, m)| (format!("_i{k}"), mul(&world, m)))
+                    .collect(),
+                None => vec![(String::new(), world)],
+            };
+            for (suffix, world) in copies {
+                for prim in mesh.primitives() {
+                    let name = if count > 1 {
+                        format!("{base}_p{}{suffix}", prim.index())
+                    } else {
+                        format!("{base}{suffix}")
+                    };
+                    let skinned = node.skin().is_some();
+                    draws.push(Draw {
+                        name,
+                        mesh: mesh.index(),
+                        primitive: prim.index(),
+                        material: prim.material().index(),
+                        world: if skinned { IDENTITY } else { world },
+                        posing_node: super::pose::node_poses(&node).then_some(i),
+                        skinned,
+                        variant: None,
+                    });
+                }
             }
+        } else if node.extension_value(GPU_INSTANCING).is_some() {
+            instance_transforms(file, &node, 0)?;
         }
         let children: Vec<_> = node.children().collect();
         for child in children.into_iter().rev() {

@@ -282,6 +282,34 @@ pub fn hostile() -> Vec<(&'static str, Vec<u8>, &'static str, &'static str)> {
         "does not have",
     );
     case(
+        "instance_counts_differ",
+        &|v| {
+            v["extensionsUsed"] = json!(["EXT_mesh_gpu_instancing"]);
+            // Two scales for three translations (the positions' accessor).
+            v["accessors"].as_array_mut().expect("accessors").push(
+                json!({ "bufferView": 0, "componentType": 5126, "count": 2, "type": "VEC3" }),
+            );
+            v["nodes"][0]["extensions"] = json!({ "EXT_mesh_gpu_instancing": {
+                "attributes": { "TRANSLATION": 0, "SCALE": 2 } } });
+        },
+        "/nodes/0/extensions/EXT_mesh_gpu_instancing/attributes/SCALE",
+        "where the other attributes have 3",
+    );
+    case(
+        "instances_past_the_scene_limit",
+        &|v| {
+            v["extensionsUsed"] = json!(["EXT_mesh_gpu_instancing"]);
+            // Refused by its count alone, before any byte is read.
+            v["accessors"].as_array_mut().expect("accessors").push(
+                json!({ "bufferView": 0, "componentType": 5126, "count": 100000, "type": "VEC3" }),
+            );
+            v["nodes"][0]["extensions"] =
+                json!({ "EXT_mesh_gpu_instancing": { "attributes": { "TRANSLATION": 2 } } });
+        },
+        "/nodes/0/extensions/EXT_mesh_gpu_instancing",
+        "100000 instances",
+    );
+    case(
         "extras_weft_unknown_key",
         &|v| {
             v["materials"][0]["extras"] =

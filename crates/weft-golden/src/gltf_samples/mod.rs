@@ -16,6 +16,8 @@
 //!   `KHR_mesh_quantization`, made by the test that compares them.
 //! - [`skinned_strip`], [`morphing_triangle`]: meshes posed by a skin and by
 //!   morph weights, made by the test that checks their poses.
+//! - [`instanced_triangle`]: a mesh drawn three times by one node through
+//!   `EXT_mesh_gpu_instancing`, made by the test that checks each copy.
 //! - [`hostile`]: files weft must refuse, each with the JSON pointer the
 //!   error names (tests/rendering/gltf_scenes.rs).
 //!
@@ -23,12 +25,14 @@
 //! them equal to this generator.
 
 mod hostile;
+mod instanced;
 mod posed;
 mod quantized;
 mod scenes;
 mod textures;
 
 pub use hostile::hostile;
+pub use instanced::{INSTANCED_NODE_AT, INSTANCES, instanced_triangle};
 pub use posed::{
     MORPH_BASE, MORPH_NORMAL_DELTA, MORPH_TARGETS, STRIP_ROWS, morphing_triangle, skinned_strip,
 };
@@ -295,6 +299,14 @@ pub fn committed_files() -> BTreeMap<String, Vec<u8>> {
     out.insert("tests/gltf/bust.gltf".to_string(), gltf);
     out.insert("tests/gltf/bust.bin".to_string(), bin);
     out.insert("tests/gltf/cutouts.glb".to_string(), cutouts());
+    // Seeds of the fuzz smoke run's glTF target (docs/fuzzing.md).
+    for (name, bytes) in [
+        ("skinned_strip", skinned_strip()),
+        ("morphing_triangle", morphing_triangle()),
+        ("instanced_triangle", instanced_triangle()),
+    ] {
+        out.insert(format!("fuzz/corpus/gltf/{name}.glb"), bytes);
+    }
     for (name, bytes, _, _) in hostile() {
         out.insert(format!("tests/gltf/bad/{name}.gltf"), bytes);
     }
