@@ -226,7 +226,7 @@ fn check_groups(m: &mut Material, sites: &Sites, diags: &mut Diagnostics) {
             d.notes.push(hint);
         } else {
             m.groups.push(Group {
-                label: crate::parse::humanize(&g),
+                label: humanize(&g),
                 name: g,
                 label_zh: None,
             });

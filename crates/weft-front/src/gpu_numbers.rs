@@ -4,7 +4,7 @@
 //! a `type-range` error at the value, naming the range.
 
 use crate::diag::Span;
-use crate::toml_reader::{Cx, Value};
+use crate::toml_reader::{Cx, F32_RANGE, Value};
 use toml::de::DeValue;
 
 /// The GPU scalar type a number is stored as.
@@ -27,7 +27,7 @@ impl GpuType {
     /// The type's range as shown in messages.
     pub fn range_text(self) -> &'static str {
         match self {
-            GpuType::F32 => "finite values within ±3.4028235e38",
+            GpuType::F32 => F32_RANGE,
             GpuType::I32 => "whole numbers from -2147483648 to 2147483647",
             GpuType::U32 => "whole numbers from 0 to 4294967295",
         }

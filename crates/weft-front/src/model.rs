@@ -4,7 +4,6 @@
 //! compiler can still point back into the TOML (e.g. for a prelude error).
 
 use crate::diag::{FileId, Span};
-use crate::variants::VariantKey;
 use std::collections::BTreeMap;
 use std::path::PathBuf;
 use weft_meta::{
@@ -169,7 +168,7 @@ pub struct TextureFile {
     pub loc: Loc,
     /// The decoded image (filled by [`crate::texture_files::load`]; empty
     /// before that and where the file could not be read).
-    pub image: std::sync::Arc<crate::texture_files::Image>,
+    pub image: std::sync::Arc<Image>,
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -544,4 +543,82 @@ name = "reference"
             Some(TextureDefault::Black)
         );
     }
+}
+
+/// The label of a name the TOML gives none for: "base_color" -> "Base color".
+pub fn humanize(name: &str) -> String {
+    let s = name.replace('_', " ");
+    let mut c = s.chars();
+    match c.next() {
+        Some(f) => f.to_uppercase().chain(c).collect(),
+        None => s,
+    }
+}
+
+/// One point of the variant space.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct VariantKey {
+    pub tier: usize,
+    /// (keyword index in `Material::keywords`, value index), static keywords only, in declaration order.
+    pub keywords: Vec<(usize, usize)>,
+}
+
+impl VariantKey {
+    /// The static part of a full assignment of keyword values (value index
+    /// per keyword of `m`, static and constant alike) at tier `tier`.
+    pub fn of_values(m: &Material, tier: usize, keyword_values: &[usize]) -> VariantKey {
+        VariantKey {
+            tier,
+            keywords: m
+                .keywords
+                .iter()
+                .enumerate()
+                .filter(|(_, k)| k.mode == weft_meta::KeywordMode::Static)
+                .map(|(i, _)| (i, keyword_values[i]))
+                .collect(),
+        }
+    }
+
+    /// File stem and id: `<tier>.<keyword>-<value>…`, lower case.
+    pub fn id(&self, m: &Material) -> String {
+        let mut id = m.tiers.values[self.tier].clone();
+        for &(k, v) in &self.keywords {
+            let kw = &m.keywords[k];
+            id.push('.');
+            id.push_str(&kw.name.to_lowercase());
+            id.push('-');
+            id.push_str(&kw.values[v]);
+        }
+        id
+    }
+
+    /// The value a condition subject has in this variant (None: not a keyword/tier).
+    pub fn value_of<'m>(&self, m: &'m Material, subject: &str) -> Option<&'m str> {
+        if subject == "tier" {
+            return Some(&m.tiers.values[self.tier]);
+        }
+        self.keywords
+            .iter()
+            .find(|(k, _)| m.keywords[*k].name == subject)
+            .map(|&(k, v)| m.keywords[k].values[v].as_str())
+    }
+
+    pub fn matches(&self, m: &Material, conds: &[Condition]) -> bool {
+        conds
+            .iter()
+            .all(|c| crate::condition::holds(c, self.value_of(m, &c.subject)))
+    }
+}
+
+/// A decoded texture file: RGBA8, rows top to bottom (the PNG's first row
+/// first), texels left to right; grey expanded to rgb, alpha 255 where the
+/// PNG has none, 16-bit samples rounded to 8 bits. Bytes as stored: the
+/// parameter's `srgb` says whether they are sRGB-encoded.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Image {
+    pub width: u32,
+    pub height: u32,
+    pub rgba8: Vec<u8>,
+    /// SHA-256 of `rgba8`, hex: every variant's metadata states it.
+    pub sha256: String,
 }

@@ -585,13 +585,3 @@ pub fn parse_vertex_inputs(t: &Table, key: &str, cx: &mut Cx) -> Option<Vec<Vert
     out.sort();
     Some(out)
 }
-
-/// "base_color" -> "Base color".
-pub fn humanize(name: &str) -> String {
-    let s = name.replace('_', " ");
-    let mut c = s.chars();
-    match c.next() {
-        Some(f) => f.to_uppercase().chain(c).collect(),
-        None => s,
-    }
-}

@@ -7,6 +7,7 @@
 
 use crate::diag::Diagnostics;
 use crate::includes::{Origin, Resolver};
+pub use crate::model::Image;
 use crate::model::Material;
 use std::sync::Arc;
 
@@ -18,19 +19,6 @@ pub const MAX_TEXTURE_FILE_SIZE: u32 = 4096;
 /// Bytes a texture file may have on disk (a PNG of the largest size, barely
 /// compressed, fits).
 pub const MAX_TEXTURE_FILE_BYTES: u64 = 96 << 20;
-
-/// A decoded texture file: RGBA8, rows top to bottom (the PNG's first row
-/// first), texels left to right; grey expanded to rgb, alpha 255 where the
-/// PNG has none, 16-bit samples rounded to 8 bits. Bytes as stored: the
-/// parameter's `srgb` says whether they are sRGB-encoded.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct Image {
-    pub width: u32,
-    pub height: u32,
-    pub rgba8: Vec<u8>,
-    /// SHA-256 of `rgba8`, hex: every variant's metadata states it.
-    pub sha256: String,
-}
 
 /// Reads and decodes every texture parameter's `file` of `m` (the path as
 /// written, under the materials root), reporting a missing, outside, unreadable

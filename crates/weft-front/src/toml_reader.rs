@@ -258,6 +258,10 @@ pub fn expect_integer(v: &Value, what: &str, cx: &mut Cx) -> Option<i64> {
     }
 }
 
+/// The range of an f32 as messages state it: every number read is bound for
+/// a GPU type (`gpu_numbers` checks the others).
+pub const F32_RANGE: &str = "finite values within ±3.4028235e38";
+
 /// A float or an integer, as f64; NaN and infinities are rejected.
 pub fn expect_number(v: &Value, what: &str, cx: &mut Cx) -> Option<f64> {
     let n = match v.get_ref() {
@@ -279,8 +283,7 @@ pub fn expect_number(v: &Value, what: &str, cx: &mut Cx) -> Option<f64> {
                 v.span(),
                 "not finite",
                 format!(
-                    "numbers are stored on the GPU as f32 or i32, which hold no infinities or NaN (an f32: {})",
-                    crate::gpu_numbers::GpuType::F32.range_text()
+                    "numbers are stored on the GPU as f32 or i32, which hold no infinities or NaN (an f32: {F32_RANGE})",
                 ),
             );
             None

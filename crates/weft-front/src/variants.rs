@@ -1,63 +1,10 @@
 //! The static variant space: every tier crossed with every value of every
 //! `static` keyword, minus the combinations `[variants].exclude` removes.
 
+pub use crate::model::VariantKey;
+
 use crate::model::Material;
-use weft_meta::{Condition, KeywordMode};
-
-/// One point of the variant space.
-#[derive(Clone, Debug, PartialEq, Eq, Hash)]
-pub struct VariantKey {
-    pub tier: usize,
-    /// (keyword index in `Material::keywords`, value index), static keywords only, in declaration order.
-    pub keywords: Vec<(usize, usize)>,
-}
-
-impl VariantKey {
-    /// The static part of a full assignment of keyword values (value index
-    /// per keyword of `m`, static and constant alike) at tier `tier`.
-    pub fn of_values(m: &Material, tier: usize, keyword_values: &[usize]) -> VariantKey {
-        VariantKey {
-            tier,
-            keywords: m
-                .keywords
-                .iter()
-                .enumerate()
-                .filter(|(_, k)| k.mode == weft_meta::KeywordMode::Static)
-                .map(|(i, _)| (i, keyword_values[i]))
-                .collect(),
-        }
-    }
-
-    /// File stem and id: `<tier>.<keyword>-<value>…`, lower case.
-    pub fn id(&self, m: &Material) -> String {
-        let mut id = m.tiers.values[self.tier].clone();
-        for &(k, v) in &self.keywords {
-            let kw = &m.keywords[k];
-            id.push('.');
-            id.push_str(&kw.name.to_lowercase());
-            id.push('-');
-            id.push_str(&kw.values[v]);
-        }
-        id
-    }
-
-    /// The value a condition subject has in this variant (None: not a keyword/tier).
-    pub fn value_of<'m>(&self, m: &'m Material, subject: &str) -> Option<&'m str> {
-        if subject == "tier" {
-            return Some(&m.tiers.values[self.tier]);
-        }
-        self.keywords
-            .iter()
-            .find(|(k, _)| m.keywords[*k].name == subject)
-            .map(|&(k, v)| m.keywords[k].values[v].as_str())
-    }
-
-    pub fn matches(&self, m: &Material, conds: &[Condition]) -> bool {
-        conds
-            .iter()
-            .all(|c| crate::condition::holds(c, self.value_of(m, &c.subject)))
-    }
-}
+use weft_meta::KeywordMode;
 
 /// The most points of the static variant space (tiers × static keyword
 /// values, before `exclude`) weft enumerates; a larger space is an error

@@ -34,6 +34,15 @@ pub const SCENE_SCHEMA_VERSION: u32 = 3;
 /// --gpu-model`).
 pub const SCENE_SCHEMA_MINOR: u32 = 6;
 
+/// The most instances a scene may have (a written manifest's and a glTF
+/// file's alike, `EXT_mesh_gpu_instancing` copies included). Instances that
+/// share a specialised shader are compiled once, and the build caps the
+/// distinct shaders separately (`weft_compiler::MAX_SCENE_SHADERS`), so this
+/// bounds the per-instance work: resolving, checking and describing each
+/// instance (1024 repeats of five objects build in about 0.2 s,
+/// docs/scaling.md).
+pub const MAX_INSTANCES: usize = 1024;
+
 /// The main light's direction (from the surface towards the light, world
 /// space; length ≈ 1, normalise it) when a scene manifest has no `[light]`:
 /// what weft's renderer draws with, and since scene schema 3.3 what the

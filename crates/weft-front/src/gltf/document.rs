@@ -28,12 +28,15 @@ pub const SUPPORTED_EXTENSIONS: &[&str] = &[
     "KHR_materials_emissive_strength",
     "KHR_texture_transform",
     MESH_QUANTIZATION,
-    super::instancing::GPU_INSTANCING,
+    GPU_INSTANCING,
 ];
 
 /// The extension that lets attributes use integer components
 /// (`accessors` reads them).
 pub const MESH_QUANTIZATION: &str = "KHR_mesh_quantization";
+
+/// The extension that draws a node's mesh once per instance (`instancing`).
+pub const GPU_INSTANCING: &str = "EXT_mesh_gpu_instancing";
 
 /// An opened glTF: the checked document and every buffer's bytes.
 pub struct GltfFile {

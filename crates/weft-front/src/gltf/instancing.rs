@@ -7,13 +7,11 @@
 
 use super::GltfError;
 use super::accessors::{Allowed, Norm, check_accessor, quantized, read_finite};
+pub use super::document::GPU_INSTANCING;
 use super::document::GltfFile;
 use super::transform::Mat4;
 use gltf::accessor::{DataType, Dimensions};
 use serde_json::Value;
-
-/// The extension's name, as files declare it.
-pub const GPU_INSTANCING: &str = "EXT_mesh_gpu_instancing";
 
 /// The instance attributes that move a copy; others are an error unless
 /// application-specific (a leading `_`, which the extension reserves for

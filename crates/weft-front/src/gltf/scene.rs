@@ -12,10 +12,10 @@ use super::instancing::{GPU_INSTANCING, instance_transforms};
 use super::materials::{MaterialMapping, float, map_material, toml_string};
 use super::transform::{IDENTITY, Mat4, mul, normalize, transform_point};
 use super::{GltfError, Warnings};
-use crate::scene::parse::MAX_INSTANCES;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::Path;
+use weft_meta::scene::MAX_INSTANCES;
 
 /// A lower_snake_case name from any glTF name (instance names).
 pub fn snake_name(raw: &str, fallback: &str) -> String {

@@ -1,8 +1,9 @@
 //! `[keywords.<NAME>]` tables -> [`Keyword`] and the `[[tier]]` list ->
 //! [`Tiers`]: the axes of the variant space.
 
-use super::{KEYWORD_KEYS, TIER_KEYS, humanize, is_snake_ident, is_upper_ident, parse_show_if};
+use super::{KEYWORD_KEYS, TIER_KEYS, is_snake_ident, is_upper_ident, parse_show_if};
 use crate::diag::Span;
+use crate::model::humanize;
 use crate::model::*;
 use crate::toml_reader::{Cx, Table, Value, expect_array, type_error};
 use toml::de::DeValue;

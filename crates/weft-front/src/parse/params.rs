@@ -1,10 +1,11 @@
 //! `[params.<name>]` tables -> [`Param`]: the type, the keys that apply to it,
 //! ranges, slider settings and the default value.
 
-use super::{DEFAULT_WHEN_KEYS, PARAM_KEYS, humanize, is_snake_ident, parse_show_if};
+use super::{DEFAULT_WHEN_KEYS, PARAM_KEYS, is_snake_ident, parse_show_if};
 use crate::check::Sites;
 use crate::diag::Span;
 use crate::gpu_numbers::{self, GpuType};
+use crate::model::humanize;
 use crate::model::*;
 use crate::toml_reader::{Cx, Table, Value, expect_array, expect_string};
 use crate::values;

@@ -1,9 +1,10 @@
 //! `[presets.<name>]` tables -> [`Preset`]: named sets of parameter, keyword
 //! and tier values, read against the parameters declared before them.
 
-use super::{PRESET_KEYS, humanize, is_upper_ident};
+use super::{PRESET_KEYS, is_upper_ident};
 use crate::diag::Span;
 use crate::gpu_numbers::{self, GpuType};
+use crate::model::humanize;
 use crate::model::*;
 use crate::toml_reader::{Cx, Table, Value, expect_number, type_error};
 use crate::values;

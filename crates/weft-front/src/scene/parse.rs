@@ -29,12 +29,7 @@ pub const SCENE_KEYS: &[&str] = &[
 pub const CAMERA_KEYS: &[&str] = &["position", "target", "fov_degrees"];
 pub const LIGHT_KEYS: &[&str] = &["direction", "color"];
 
-/// The most instances a scene may have. Instances that share a specialised
-/// shader are compiled once, and the build caps the distinct shaders
-/// separately (`weft_compiler::MAX_SCENE_SHADERS`), so this bounds the
-/// per-instance work: resolving, checking and describing each instance
-/// (1024 repeats of five objects build in about 0.2 s, docs/scaling.md).
-pub const MAX_INSTANCES: usize = 1024;
+pub use weft_meta::scene::MAX_INSTANCES;
 pub const INSTANCE_KEYS: &[&str] = &[
     "name",
     "material",
