@@ -17,7 +17,7 @@
 //! at once the loop never runs, and when after one iteration (body then
 //! continuing) the `break if` holds or the guard breaks, it runs once.
 
-use super::locals::{State, root_local, stored_locals};
+use super::local_vars::{State, root_local, stored_locals};
 use naga::{
     BinaryOperator, Block, Expression, Handle, Literal, LocalVariable, Module, Statement,
     TypeInner, UnaryOperator,

@@ -15,6 +15,7 @@ mod evaluate;
 pub mod fold;
 mod identities;
 pub mod instance;
+mod local_vars;
 mod locals;
 mod loops;
 mod record;
