@@ -3,7 +3,7 @@
 //! directions (a key light, a side light and a grazing rim light from
 //! behind), each cell rendered in the reference tier and in the tier under
 //! test with the same keywords and values, compared by FLIP over object
-//! pixels ([`crate::shading::image_error`]). A tier's figures are the worst
+//! pixels ([`weft_auto::image_error::image_error`]). A tier's figures are the worst
 //! cell and the mean over cells.
 
 use std::path::Path;
@@ -129,7 +129,7 @@ pub fn tier_errors(
                     let Some(image) = render(renderer, tier) else {
                         continue;
                     };
-                    let err = crate::shading::image_error(&reference_image, &image?);
+                    let err = weft_auto::image_error::image_error(&reference_image, &image?);
                     cells[i].push((err.flip_mean, cell.clone()));
                 }
             }

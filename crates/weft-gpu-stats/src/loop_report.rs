@@ -172,7 +172,9 @@ pub fn committed_gpu_timings(generated: &Path) -> Vec<GpuTimings> {
     };
     let mut files: Vec<String> = entries
         .filter_map(|e| e.ok()?.file_name().into_string().ok())
-        .filter(|n| n.starts_with("gpu-") && n.ends_with(".json") && n != crate::summary::FILE_NAME)
+        .filter(|n| {
+            n.starts_with("gpu-") && n.ends_with(".json") && n != weft_meta::gpu_model::FILE_NAME
+        })
         .collect();
     files.sort();
     files
