@@ -19,7 +19,7 @@
 //! - shoulders: v = θ/π, u = φ/2π.
 
 use crate::math;
-use crate::scene::Mesh;
+use crate::mesh::Mesh;
 use std::f32::consts::PI;
 
 /// The bust's parts, in draw order.

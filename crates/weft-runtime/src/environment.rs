@@ -74,7 +74,7 @@ pub struct SkyParams {
 impl Default for SkyParams {
     fn default() -> Self {
         SkyParams {
-            sun_direction: crate::scene::Light::default().direction,
+            sun_direction: weft_meta::scene::DEFAULT_LIGHT_DIRECTION.map(|c| c as f32),
             sun_radiance: [60.0, 55.0, 46.0],
             sun_radius_degrees: 2.5,
             zenith: [0.11, 0.24, 0.62],

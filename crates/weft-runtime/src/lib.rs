@@ -24,6 +24,7 @@ pub mod image;
 pub mod luts;
 pub mod material;
 pub mod math;
+pub mod mesh;
 pub mod scene;
 pub mod scene_library;
 pub mod texture_files;
