@@ -345,7 +345,7 @@ fn assert_metadata_matches_module(name: &str, shader: &VariantShader, passes: &[
     let wgsl = &shader.files["wgsl"][0];
     let bytes = file(name);
     assert_eq!(
-        weft_compiler::variant::sha256_hex(bytes),
+        weft_compiler::digest::sha256_hex(bytes),
         wgsl.sha256,
         "{name}: hash"
     );

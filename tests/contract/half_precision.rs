@@ -55,7 +55,7 @@ fn read(dir: &Path, shader: &VariantShader, lang: &str, f16: bool) -> Vec<Vec<u8
         .map(|f| {
             let bytes = std::fs::read(dir.join(&f.path)).expect("listed file");
             assert_eq!(
-                weft_compiler::variant::sha256_hex(&bytes),
+                weft_compiler::digest::sha256_hex(&bytes),
                 f.sha256,
                 "{}",
                 f.path

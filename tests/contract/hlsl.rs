@@ -100,11 +100,11 @@ pub fn heaps() -> [(&'static str, u32); 2] {
     [
         (
             "nagaSamplerHeap",
-            u32::from(weft_compiler::backends::HLSL_SAMPLER_HEAP_SPACE),
+            u32::from(weft_compiler::engine_binding::HLSL_SAMPLER_HEAP_SPACE),
         ),
         (
             "nagaComparisonSamplerHeap",
-            u32::from(weft_compiler::backends::HLSL_COMPARISON_SAMPLER_HEAP_SPACE),
+            u32::from(weft_compiler::engine_binding::HLSL_COMPARISON_SAMPLER_HEAP_SPACE),
         ),
     ]
 }
@@ -252,7 +252,7 @@ pub fn controls() -> Vec<Control> {
         let info = weft_compiler::compose::validator()
             .validate(&module)
             .unwrap();
-        let options = weft_compiler::backends::hlsl_options(&module);
+        let options = weft_compiler::engine_binding::hlsl_options(&module);
         let pipeline = naga::back::hlsl::PipelineOptions { entry_point: None };
         let mut raw = String::new();
         naga::back::hlsl::Writer::new(&mut raw, &options, &pipeline)

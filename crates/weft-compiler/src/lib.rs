@@ -26,8 +26,8 @@ pub use build::{
     cache, folder_build, in_memory, library, output, ownership, shard, staging, stamp, unchanged,
 };
 pub use compile::{
-    backends, compose, engine_binding, half, hlsl_samplers, hlsl_select, limits, metadata, nesting,
-    prelude, reflect, specialise, stage_io, tables, texture_files, variant,
+    backends, compose, digest, engine_binding, half, hlsl_samplers, hlsl_select, limits, metadata,
+    nesting, prelude, reflect, source_map, specialise, stage_io, tables, texture_files, variant,
 };
 
 pub use in_memory::{InMemoryBuild, compile_in_memory};

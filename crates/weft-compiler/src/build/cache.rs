@@ -46,7 +46,8 @@
 //!
 //! Without either, the cache must be trusted like the compiler itself.
 
-use crate::compile::variant::{CompiledVariant, sha256_hex};
+use crate::compile::digest::sha256_hex;
+use crate::compile::variant::CompiledVariant;
 use serde::{Deserialize, Serialize};
 use sha2::{Digest, Sha256};
 use std::io::{self, Write};

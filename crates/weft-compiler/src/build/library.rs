@@ -9,12 +9,12 @@ use crate::build::cache::UnitCache;
 // The per-material compile and its constants, kept at their old paths for
 // `build.rs` users (`weft_compiler::library::compile_material`).
 use crate::bake;
+use crate::compile::digest::sha256_hex;
 pub use crate::compile::material::{
     CompiledMaterial, SHEEN_LUT_PATH, SHEEN_LUT_SIZE, SPLIT_SUM_LUT_PATH, SPLIT_SUM_LUT_SAMPLES,
     SPLIT_SUM_LUT_SIZE, compile_material, inputs_hash,
 };
 use crate::compile::material::{VariantStore, compile_material_with};
-use crate::compile::variant::sha256_hex;
 use codespan_reporting::diagnostic::{Diagnostic, Label};
 use sha2::{Digest, Sha256};
 use std::collections::BTreeMap;

@@ -302,7 +302,7 @@ impl BuildOutput {
                 };
                 let bytes = std::fs::read(&path)
                     .map_err(|e| io::Error::new(e.kind(), format!("`{}`: {e}", path.display())))?;
-                if crate::compile::variant::sha256_hex(&bytes) != *sha {
+                if crate::compile::digest::sha256_hex(&bytes) != *sha {
                     return Err(changed(&path));
                 }
             }
@@ -324,7 +324,7 @@ impl BuildOutput {
             let bytes = std::fs::read(&path)
                 .map_err(|e| io::Error::new(e.kind(), format!("`{}`: {e}", path.display())))?;
             if let Some(sha) = sha
-                && crate::compile::variant::sha256_hex(&bytes) != *sha
+                && crate::compile::digest::sha256_hex(&bytes) != *sha
             {
                 return Err(changed(&path));
             }

@@ -2,17 +2,13 @@
 //!
 //! Options are fixed here (never naga's build-profile-dependent defaults) so
 //! bytes are identical in debug and release builds and on every machine.
-//! The HLSL register mapping is documented in docs/hlsl-registers.md.
+//! The HLSL register mapping (`engine_binding::hlsl_options`) is documented
+//! in docs/hlsl-registers.md.
 
+use crate::compile::engine_binding::hlsl_options;
 use naga::back::{glsl, hlsl, msl, spv, wgsl};
 use naga::valid::ModuleInfo;
 use naga::{Module, ShaderStage};
-
-/// HLSL: samplers live in naga's sampler heap (`nagaSamplerHeap`) at this space…
-pub const HLSL_SAMPLER_HEAP_SPACE: u8 = 8;
-pub const HLSL_COMPARISON_SAMPLER_HEAP_SPACE: u8 = 9;
-/// …and each group's sampler-index buffer is `t<this>` in the group's space.
-pub const HLSL_SAMPLER_INDEX_REGISTER: u32 = 64;
 
 pub fn emit_wgsl(module: &Module, info: &ModuleInfo) -> Result<String, String> {
     wgsl::write_string(module, info, wgsl::WriterFlags::empty())
@@ -36,41 +32,6 @@ pub fn emit_spirv(module: &Module, info: &ModuleInfo) -> Result<Vec<u8>, String>
     let words =
         spv::write_vec(module, info, &options, None).map_err(|e| format!("SPIR-V backend: {e}"))?;
     Ok(words.iter().flat_map(|w| w.to_le_bytes()).collect())
-}
-
-/// (group, binding) -> register `binding` in space `group`.
-pub fn hlsl_options(module: &Module) -> hlsl::Options {
-    let mut options = hlsl::Options {
-        shader_model: hlsl::ShaderModel::V5_1,
-        fake_missing_bindings: false,
-        ..hlsl::Options::default()
-    };
-    options.sampler_heap_target = hlsl::SamplerHeapBindTargets {
-        standard_samplers: bind_target(HLSL_SAMPLER_HEAP_SPACE, 0),
-        comparison_samplers: bind_target(HLSL_COMPARISON_SAMPLER_HEAP_SPACE, 0),
-    };
-    for (_, var) in module.global_variables.iter() {
-        if let Some(rb) = &var.binding {
-            options
-                .binding_map
-                .insert(*rb, bind_target(rb.group as u8, rb.binding));
-            options.sampler_buffer_binding_map.insert(
-                hlsl::SamplerIndexBufferKey { group: rb.group },
-                bind_target(rb.group as u8, HLSL_SAMPLER_INDEX_REGISTER),
-            );
-        }
-    }
-    options
-}
-
-fn bind_target(space: u8, register: u32) -> hlsl::BindTarget {
-    hlsl::BindTarget {
-        space,
-        register,
-        binding_array_size: None,
-        dynamic_storage_buffer_offsets_index: None,
-        restrict_indexing: false,
-    }
 }
 
 /// HLSL that DXC (HLSL 2021 and 2016), FXC SM 5.1 and Slang all accept:

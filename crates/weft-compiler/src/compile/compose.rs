@@ -7,61 +7,14 @@
 
 use crate::compile::prelude::Prelude;
 use codespan_reporting::diagnostic::{Diagnostic, Label};
-use std::ops::Range;
 use weft_front::model::{Loc, Material};
 use weft_front::{Diagnostics, FileId, SourceDb};
 
-/// Where a range of composed text came from.
-#[derive(Clone, Debug)]
-pub enum Target {
-    /// Copied from a file starting at this byte offset.
-    File { file: FileId, offset: usize },
-    /// Generated from a TOML declaration.
-    Decl(Loc),
-}
-
-#[derive(Clone, Debug, Default)]
-pub struct SourceMap {
-    segments: Vec<(Range<usize>, Target)>,
-}
-
-impl SourceMap {
-    /// Maps a composed span to a file span. A span inside generated text maps
-    /// to the whole declaration it was generated from.
-    pub fn map(&self, span: Range<usize>) -> Option<(FileId, Range<usize>)> {
-        let (seg, target) = self
-            .segments
-            .iter()
-            .find(|(r, _)| r.start <= span.start && span.start < r.end.max(r.start + 1))?;
-        Some(match target {
-            Target::File { file, offset } => {
-                let start = span.start - seg.start + offset;
-                let end = span.end.min(seg.end) - seg.start + offset;
-                (*file, start..end.max(start))
-            }
-            Target::Decl(loc) => (loc.file, loc.span.clone()),
-        })
-    }
-}
-
-pub struct Composed {
-    pub text: String,
-    pub map: SourceMap,
-}
-
-pub const ENGINE_INTERFACE: &str = include_str!("wgsl/engine_interface.wgsl");
-
-/// The engine-feature overrides of `engine_interface.wgsl` and the values a
-/// library (scene-independent) variant is built with: everything provided.
-/// Scene builds fix them to what the scene provides (`scene::features`).
-pub const FEATURE_ENVIRONMENT: &str = "WEFT_ENVIRONMENT";
-pub const FEATURE_SH_AMBIENT: &str = "WEFT_SH_AMBIENT";
-pub const FEATURE_DIRECTIONAL_LIGHTS: &str = "WEFT_DIRECTIONAL_LIGHTS";
-pub const FEATURE_DEFAULTS: [(&str, naga::Literal); 3] = [
-    (FEATURE_ENVIRONMENT, naga::Literal::Bool(true)),
-    (FEATURE_SH_AMBIENT, naga::Literal::Bool(true)),
-    (FEATURE_DIRECTIONAL_LIGHTS, naga::Literal::U32(1)),
-];
+pub use super::engine_binding::{
+    ENGINE_INTERFACE, FEATURE_DEFAULTS, FEATURE_DIRECTIONAL_LIGHTS, FEATURE_ENVIRONMENT,
+    FEATURE_SH_AMBIENT,
+};
+pub use super::source_map::{Composed, SourceMap, Target};
 
 /// Registers the engine interface in the source database (once) so its lines can be shown.
 pub fn engine_interface_file(db: &mut SourceDb) -> FileId {
@@ -76,7 +29,7 @@ pub fn engine_interface_file(db: &mut SourceDb) -> FileId {
 }
 
 /// How `weft_half`, the type of half-precision code, is spelled in a composed
-/// module (crate::compile::half): `f16` in the module every language but HLSL and GLSL
+/// module (`half.rs`): `f16` in the module every language but HLSL and GLSL
 /// is written from, `f32` in the fallback module they are written from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum HalfAs {

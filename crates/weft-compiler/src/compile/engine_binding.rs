@@ -8,12 +8,11 @@
 //! prelude's group-1 samplers to engines; `reflect.rs` attaches it to the
 //! bindings a variant keeps.
 
-use crate::compile::material::{
-    SHEEN_LUT_PATH, SHEEN_LUT_SIZE, SPLIT_SUM_LUT_PATH, SPLIT_SUM_LUT_SIZE,
-};
 use crate::compile::prelude::{
     MATERIAL_CLAMP_SAMPLER_BINDING, MATERIAL_GROUP, MATERIAL_SAMPLER_BINDING,
 };
+use naga::Module;
+use naga::back::hlsl;
 use std::collections::BTreeMap;
 use weft_meta::{
     AddressMode, ClipSpaceY, ConstantKeywords, DepthRange, EngineResource, FilterMode, FrontFace,
@@ -22,6 +21,45 @@ use weft_meta::{
 
 use weft_meta::engine::{self as ids, ENGINE_BINDINGS};
 pub use weft_meta::engine::{FRAME_GROUP, OBJECT_GROUP};
+
+pub const ENGINE_INTERFACE: &str = include_str!("wgsl/engine_interface.wgsl");
+
+/// The engine-feature overrides of `engine_interface.wgsl` and the values a
+/// library (scene-independent) variant is built with: everything provided.
+/// Scene builds fix them to what the scene provides (`scene::features`).
+pub const FEATURE_ENVIRONMENT: &str = "WEFT_ENVIRONMENT";
+pub const FEATURE_SH_AMBIENT: &str = "WEFT_SH_AMBIENT";
+pub const FEATURE_DIRECTIONAL_LIGHTS: &str = "WEFT_DIRECTIONAL_LIGHTS";
+pub const FEATURE_DEFAULTS: [(&str, naga::Literal); 3] = [
+    (FEATURE_ENVIRONMENT, naga::Literal::Bool(true)),
+    (FEATURE_SH_AMBIENT, naga::Literal::Bool(true)),
+    (FEATURE_DIRECTIONAL_LIGHTS, naga::Literal::U32(1)),
+];
+
+/// Size and sample count of the baked split-sum LUT.
+pub const SPLIT_SUM_LUT_SIZE: u32 = 64;
+
+pub const SPLIT_SUM_LUT_SAMPLES: u32 = 1024;
+
+/// Size and sample count are in the name, so a reused file is never a stale bake.
+pub const SPLIT_SUM_LUT_PATH: &str = "luts/split_sum_ggx_64x64_1024spp.rg16f";
+
+/// Size and quadrature of the baked Charlie sheen albedo table (bake/sheen.rs):
+/// `SHEEN_LUT_SIZE`^2 texels, `THETA_STEPS * PHI_STEPS` = 8192 points each.
+pub const SHEEN_LUT_SIZE: u32 = 32;
+
+pub const SHEEN_LUT_PATH: &str = "luts/charlie_albedo_32x32_8192spp.r16f";
+
+const _: () = assert!(
+    SHEEN_LUT_SIZE == 32 && crate::bake::sheen::THETA_STEPS * crate::bake::sheen::PHI_STEPS == 8192,
+    "SHEEN_LUT_PATH must name the table's size and quadrature"
+);
+
+/// HLSL: samplers live in naga's sampler heap (`nagaSamplerHeap`) at this space…
+pub const HLSL_SAMPLER_HEAP_SPACE: u8 = 8;
+pub const HLSL_COMPARISON_SAMPLER_HEAP_SPACE: u8 = 9;
+/// …and each group's sampler-index buffer is `t<this>` in the group's space.
+pub const HLSL_SAMPLER_INDEX_REGISTER: u32 = 64;
 
 /// The format of the prefiltered environment cube `weft-render` binds.
 pub const ENVIRONMENT_FORMAT: &str = "rgba16float";
@@ -341,6 +379,41 @@ pub const ENGINE_BINDING_NAMES: [&str; ENGINE_BINDINGS.len()] = {
     names
 };
 
+/// (group, binding) -> register `binding` in space `group`.
+pub fn hlsl_options(module: &Module) -> hlsl::Options {
+    let mut options = hlsl::Options {
+        shader_model: hlsl::ShaderModel::V5_1,
+        fake_missing_bindings: false,
+        ..hlsl::Options::default()
+    };
+    options.sampler_heap_target = hlsl::SamplerHeapBindTargets {
+        standard_samplers: bind_target(HLSL_SAMPLER_HEAP_SPACE, 0),
+        comparison_samplers: bind_target(HLSL_COMPARISON_SAMPLER_HEAP_SPACE, 0),
+    };
+    for (_, var) in module.global_variables.iter() {
+        if let Some(rb) = &var.binding {
+            options
+                .binding_map
+                .insert(*rb, bind_target(rb.group as u8, rb.binding));
+            options.sampler_buffer_binding_map.insert(
+                hlsl::SamplerIndexBufferKey { group: rb.group },
+                bind_target(rb.group as u8, HLSL_SAMPLER_INDEX_REGISTER),
+            );
+        }
+    }
+    options
+}
+
+fn bind_target(space: u8, register: u32) -> hlsl::BindTarget {
+    hlsl::BindTarget {
+        space,
+        register,
+        binding_array_size: None,
+        dynamic_storage_buffer_offsets_index: None,
+        restrict_indexing: false,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -352,7 +425,7 @@ mod tests {
             assert_eq!(r.id, b.id, "{}", b.name);
         }
         // The WGSL declares exactly weft_meta's (group, binding, name) table.
-        let src = crate::compile::compose::ENGINE_INTERFACE;
+        let src = ENGINE_INTERFACE;
         let declared = src
             .lines()
             .filter(|l| l.starts_with("@group("))

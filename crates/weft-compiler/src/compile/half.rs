@@ -9,8 +9,9 @@
 //! second composition with `alias weft_half = f32;`: the same code, in f32.
 //! Materials that never name `weft_half` or `f16` get no second parse.
 
-use crate::compile::compose::{self, Composed, HalfAs};
+use crate::compile::compose::{self, HalfAs};
 use crate::compile::prelude::Prelude;
+use crate::compile::source_map::Composed;
 use naga::{Module, Scalar, TypeInner};
 use weft_front::model::Material;
 use weft_front::{Diagnostics, SourceDb};

@@ -6,7 +6,7 @@
 //! error at the binding's declaration in the user's files (a parameter's in
 //! the TOML, a binding's in the WGSL), naming the limit.
 
-use crate::compile::compose::Composed;
+use crate::compile::source_map::Composed;
 use crate::compile::variant::CompiledVariant;
 use codespan_reporting::diagnostic::{Diagnostic, Label};
 use std::collections::BTreeMap;

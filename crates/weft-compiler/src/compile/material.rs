@@ -5,8 +5,10 @@
 //! Where compiled variants are kept between builds is the caller's
 //! ([`VariantStore`]; the build's shared cache implements it).
 
-use crate::bake;
 use crate::compile::compose::{self, ENGINE_INTERFACE};
+pub use crate::compile::engine_binding::{
+    SHEEN_LUT_PATH, SHEEN_LUT_SIZE, SPLIT_SUM_LUT_PATH, SPLIT_SUM_LUT_SAMPLES, SPLIT_SUM_LUT_SIZE,
+};
 use crate::compile::variant::{self, CompiledVariant};
 use crate::compile::{metadata, prelude};
 use codespan_reporting::diagnostic::{Diagnostic, Label};
@@ -35,25 +37,6 @@ pub trait VariantStore: Sync {
     /// written only costs the next build time.
     fn keep(&self, inputs_hash: &str, compiled: &CompiledVariant);
 }
-
-/// Size and sample count of the baked split-sum LUT.
-pub const SPLIT_SUM_LUT_SIZE: u32 = 64;
-
-pub const SPLIT_SUM_LUT_SAMPLES: u32 = 1024;
-
-/// Size and sample count are in the name, so a reused file is never a stale bake.
-pub const SPLIT_SUM_LUT_PATH: &str = "luts/split_sum_ggx_64x64_1024spp.rg16f";
-
-/// Size and quadrature of the baked Charlie sheen albedo table (bake/sheen.rs):
-/// `SHEEN_LUT_SIZE`^2 texels, `THETA_STEPS * PHI_STEPS` = 8192 points each.
-pub const SHEEN_LUT_SIZE: u32 = 32;
-
-pub const SHEEN_LUT_PATH: &str = "luts/charlie_albedo_32x32_8192spp.r16f";
-
-const _: () = assert!(
-    SHEEN_LUT_SIZE == 32 && bake::sheen::THETA_STEPS * bake::sheen::PHI_STEPS == 8192,
-    "SHEEN_LUT_PATH must name the table's size and quadrature"
-);
 
 /// A material's metadata and its files (paths relative to its folder).
 pub type CompiledMaterial = (MaterialMetadata, Vec<(String, Vec<u8>)>);

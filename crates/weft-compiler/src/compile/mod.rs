@@ -17,6 +17,7 @@
 
 pub mod backends;
 pub mod compose;
+pub mod digest;
 pub mod engine_binding;
 pub mod half;
 pub mod hlsl_samplers;
@@ -27,6 +28,7 @@ pub mod metadata;
 pub mod nesting;
 pub mod prelude;
 pub mod reflect;
+pub mod source_map;
 pub mod specialise;
 pub mod stage_io;
 pub mod tables;

@@ -5,7 +5,7 @@
 //! [`MAX_EXPRESSION_DEPTH`] (long chains like `a + b + c + …` included) is an
 //! error at that expression rather than a stack overflow in a backend.
 
-use crate::compile::compose::Composed;
+use crate::compile::source_map::Composed;
 use naga::{Expression, Handle, SampleLevel};
 use std::ops::Range;
 use weft_front::FileId;

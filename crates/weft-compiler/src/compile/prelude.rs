@@ -6,7 +6,7 @@
 //! Every line is tagged with the TOML declaration it comes from, so a naga
 //! error in the prelude is reported at that declaration, never in generated text.
 
-use crate::compile::compose::Target;
+use crate::compile::source_map::Target;
 use weft_front::model::{Loc, Material, Param, ParamValue};
 use weft_front::samples;
 use weft_meta::uniform::TILING_OFFSET_TYPE;

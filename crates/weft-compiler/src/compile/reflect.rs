@@ -2,8 +2,8 @@
 //! the bindings that survived dead-branch removal, the material uniform's
 //! layout as naga's layouter computes it, and vertex inputs.
 
-use crate::compile::backends::{HLSL_SAMPLER_INDEX_REGISTER, hlsl_options};
 use crate::compile::engine_binding;
+use crate::compile::engine_binding::{HLSL_SAMPLER_INDEX_REGISTER, hlsl_options};
 use crate::compile::prelude::{MATERIAL_GROUP, MATERIAL_UNIFORM_BINDING, UNIFORM_STRUCT};
 use naga::valid::ModuleInfo;
 use naga::{AddressSpace, ImageClass, ImageDimension, Module, ShaderStage, TypeInner};

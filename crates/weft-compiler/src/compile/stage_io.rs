@@ -5,7 +5,7 @@
 //! `maxInterStageShaderVariables` (or the material's `[limits]`). Errors
 //! point at the pass in the TOML and at the structs in the WGSL.
 
-use crate::compile::compose::Composed;
+use crate::compile::source_map::Composed;
 use codespan_reporting::diagnostic::{Diagnostic, Label};
 use naga::{Binding, BuiltIn, Interpolation, Module, Sampling, ShaderStage, TypeInner};
 use weft_front::Diagnostics;

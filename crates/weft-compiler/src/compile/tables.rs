@@ -98,7 +98,7 @@ pub fn resource(m: &Material, t: &BakedTable) -> EngineResource {
             u: u.into(),
             v: v.into(),
             channels: channels.into(),
-            sha256: Some(crate::compile::variant::sha256_hex(&bake(t))),
+            sha256: Some(crate::compile::digest::sha256_hex(&bake(t))),
             mip_chain: None,
         }),
     }

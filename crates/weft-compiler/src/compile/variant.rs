@@ -1,13 +1,13 @@
 //! Compiling one variant: specialise, validate, emit every language, reflect.
 
 use crate::compile::backends::{self, stage_suffix};
-use crate::compile::compose::FEATURE_DEFAULTS;
 use crate::compile::compose::validator;
+use crate::compile::digest::sha256_hex;
+use crate::compile::engine_binding::FEATURE_DEFAULTS;
 use crate::compile::prelude::{Prelude, TIER_OVERRIDE};
 use crate::compile::reflect;
 use crate::compile::specialise::{Bindings, specialise};
 use naga::Literal;
-use sha2::{Digest, Sha256};
 use std::collections::{BTreeMap, HashMap};
 use weft_front::model::Material;
 use weft_front::variants::VariantKey;
@@ -20,13 +20,6 @@ pub struct CompiledVariant {
     pub shader: VariantShader,
     /// The WGSL text, used to detect identical variants.
     pub wgsl: String,
-}
-
-pub fn sha256_hex(bytes: &[u8]) -> String {
-    Sha256::digest(bytes)
-        .iter()
-        .map(|b| format!("{b:02x}"))
-        .collect()
 }
 
 fn keyword_literal(kind: KeywordKind, value: usize) -> Literal {
