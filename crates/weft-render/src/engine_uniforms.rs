@@ -3,11 +3,20 @@
 //! `buffer.layout`, into buffers of its `min_binding_size`. A member
 //! weft-render does not know is a metadata error naming it.
 
-use crate::draw::FrameView;
 use crate::error::{Error, Result};
 use crate::gpu::Gpu;
 use crate::math::{self, Mat4};
-use crate::renderer::RenderOptions;
+use crate::resources::GpuEnvironment;
+use crate::scene::{Camera, Light};
+use crate::targets::RenderOptions;
+
+/// Camera, light and environment of one frame (`weft_frame`, and the sky).
+pub(crate) struct FrameView<'a> {
+    pub camera: &'a Camera,
+    pub light: &'a Light,
+    pub env: &'a GpuEnvironment,
+}
+
 use weft_meta::{Binding, UniformLayout, UniformMember, UniformType, UniformValue};
 
 /// A uniform buffer and the layout its contents are written by.

@@ -56,6 +56,7 @@ mod renderer;
 mod resources;
 use weft_runtime::scene;
 mod scene_draw;
+mod targets;
 use weft_runtime::scene_library;
 use weft_runtime::texture_files;
 mod timing;

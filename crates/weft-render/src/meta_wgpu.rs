@@ -5,7 +5,7 @@
 //! blend mode name or binding kind.
 
 use crate::error::{Error, Result};
-use crate::renderer::{ColorFormat, DEPTH_FORMAT};
+use crate::targets::{ColorFormat, DEPTH_FORMAT};
 use std::num::NonZeroU64;
 use weft_meta::{
     AddressMode, Binding, BlendComponent, BlendFactor, BlendOperation, BlendState,

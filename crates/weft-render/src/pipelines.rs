@@ -9,10 +9,9 @@ use crate::gpu::Gpu;
 use crate::meta_wgpu::{
     binding_layout_entry, color_target_state, depth_stencil_state, primitive_state,
 };
-use crate::renderer::{ColorFormat, DEPTH_FORMAT, Renderer, ShaderLanguage};
+use crate::targets::{ColorFormat, DEPTH_FORMAT, ShaderLanguage};
 use std::collections::BTreeMap;
 use std::path::Path;
-use std::sync::Arc;
 use weft_meta::{BindingKind, Pass, VariantShader, VertexInput};
 
 /// Which shader to build pipelines from, and how.
@@ -55,59 +54,6 @@ pub(crate) struct VariantPipelines {
     pub layouts: Vec<Option<wgpu::BindGroupLayout>>,
     pub passes: Vec<PassPipeline>,
     pub vertex_inputs: Vec<VertexInput>,
-}
-
-impl Renderer {
-    /// The pipelines of `input` for `passes` (in that order), from the cache
-    /// or built now (counted in [`Renderer::pipelines_created`]).
-    pub(crate) fn variant_pipelines(
-        &mut self,
-        input: &ShaderInput,
-        passes: &[Pass],
-        format: ColorFormat,
-    ) -> Result<Arc<VariantPipelines>> {
-        let states: Vec<_> = passes
-            .iter()
-            .map(|p| {
-                (
-                    &p.name,
-                    &p.vertex_entry,
-                    &p.fragment_entry,
-                    &p.primitive,
-                    &p.color_targets,
-                    &p.depth_stencil,
-                )
-            })
-            .collect();
-        let key = format!(
-            "{}|{:?}|{}|{}|{:?}|{:?}|{:?}|{:?}",
-            input.cache_id,
-            input.language(),
-            input.f32_fallback,
-            input.uniforms_as_storage,
-            format,
-            input.constants,
-            input.spirv_file,
-            states
-        );
-        if let Some(p) = self.cache.get(&key) {
-            return Ok(p.clone());
-        }
-        let p = Arc::new(build_pipelines(&self.gpu, input, passes, format)?);
-        self.pipelines_created += p.passes.len() as u64;
-        self.cache.insert(key, p.clone());
-        Ok(p)
-    }
-
-    /// Builds the sky pipeline for `format` unless it exists.
-    pub(crate) fn ensure_sky_pipeline(&mut self, format: ColorFormat) -> Result<()> {
-        if !self.sky_pipelines.contains_key(&format) {
-            let p = build_sky_pipeline(&self.gpu, &self.sky_layout, &self.sky_module, format)?;
-            self.pipelines_created += 1;
-            self.sky_pipelines.insert(format, p);
-        }
-        Ok(())
-    }
 }
 
 /// Whether to draw the shader's half-precision files (`f16_files`): when it
@@ -202,7 +148,7 @@ fn shader_source(gpu: &Gpu, input: &ShaderInput) -> Result<wgpu::ShaderSource<'s
     })
 }
 
-fn build_pipelines(
+pub(crate) fn build_pipelines(
     gpu: &Gpu,
     input: &ShaderInput,
     passes: &[Pass],
@@ -331,7 +277,7 @@ fn build_pipelines(
     })
 }
 
-fn build_sky_pipeline(
+pub(crate) fn build_sky_pipeline(
     gpu: &Gpu,
     sky_layout: &wgpu::BindGroupLayout,
     sky_module: &wgpu::ShaderModule,

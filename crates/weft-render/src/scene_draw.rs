@@ -11,7 +11,8 @@
 //! draw itself are shared.
 
 use crate::bindings::{BoundShader, ObjectResources};
-use crate::draw::{DrawCall, FrameView};
+use crate::draw::DrawCall;
+use crate::engine_uniforms::FrameView;
 use crate::error::{Error, Result, io_err};
 use crate::image::HdrImage;
 use crate::material::{constant_default, constant_value, instance_count_of};

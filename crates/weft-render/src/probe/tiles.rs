@@ -1,7 +1,8 @@
 //! Many small independent renders of one prepared material in one target
 //! (the stability probe's tiles: `Renderer::render_tiles`).
 
-use crate::draw::{FrameView, RenderTargets, clear_color};
+use crate::draw::{RenderTargets, clear_color};
+use crate::engine_uniforms::FrameView;
 use crate::engine_uniforms::{frame_bytes, object_bytes};
 use crate::error::{Error, Result};
 use crate::image::HdrImage;
