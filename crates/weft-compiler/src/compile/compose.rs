@@ -10,11 +10,8 @@ use codespan_reporting::diagnostic::{Diagnostic, Label};
 use weft_front::model::{Loc, Material};
 use weft_front::{Diagnostics, FileId, SourceDb};
 
-pub use super::engine_binding::{
-    ENGINE_INTERFACE, FEATURE_DEFAULTS, FEATURE_DIRECTIONAL_LIGHTS, FEATURE_ENVIRONMENT,
-    FEATURE_SH_AMBIENT,
-};
-pub use super::source_map::{Composed, SourceMap, Target};
+use super::engine_binding::ENGINE_INTERFACE;
+use super::source_map::{Composed, SourceMap, Target};
 
 /// Registers the engine interface in the source database (once) so its lines can be shown.
 pub fn engine_interface_file(db: &mut SourceDb) -> FileId {

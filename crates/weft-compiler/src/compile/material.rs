@@ -5,7 +5,8 @@
 //! Where compiled variants are kept between builds is the caller's
 //! ([`VariantStore`]; the build's shared cache implements it).
 
-use crate::compile::compose::{self, ENGINE_INTERFACE};
+use crate::compile::compose;
+use crate::compile::engine_binding::ENGINE_INTERFACE;
 pub use crate::compile::engine_binding::{
     SHEEN_LUT_PATH, SHEEN_LUT_SIZE, SPLIT_SUM_LUT_PATH, SPLIT_SUM_LUT_SAMPLES, SPLIT_SUM_LUT_SIZE,
 };

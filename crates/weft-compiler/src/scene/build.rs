@@ -358,7 +358,7 @@ pub fn build_resolved_scene(
 struct MaterialModule {
     prelude: prelude::Prelude,
     module: naga::Module,
-    composed: compose::Composed,
+    composed: crate::compile::source_map::Composed,
     /// The f32 module of a material with half-precision tiers.
     fallback: Option<naga::Module>,
 }

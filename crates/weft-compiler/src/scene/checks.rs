@@ -90,7 +90,7 @@ pub(super) fn mesh_feeds_shader(
 /// The material's module as the limit check needs it: composed text,
 /// validated module, and the engine interface's file.
 pub(super) struct LimitInputs<'a> {
-    pub composed: &'a crate::compile::compose::Composed,
+    pub composed: &'a crate::compile::source_map::Composed,
     pub module: &'a naga::Module,
     pub engine: FileId,
 }

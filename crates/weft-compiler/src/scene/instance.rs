@@ -3,7 +3,7 @@
 //! exactly as the runtime would have uploaded them), and which stay data.
 
 use super::fold::{ConstValue, FoldRequest};
-use crate::compile::compose::{
+use crate::compile::engine_binding::{
     FEATURE_DIRECTIONAL_LIGHTS, FEATURE_ENVIRONMENT, FEATURE_SH_AMBIENT,
 };
 use crate::compile::prelude::{TIER_OVERRIDE, UNIFORM_VAR, uniform_members};

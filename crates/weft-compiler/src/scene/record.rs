@@ -4,8 +4,8 @@
 //! inputs hash, the funnel — as `<scene>.scene.json` among the files.
 
 use super::instance::{InstanceValues, scene_transform};
+use crate::compile::metadata;
 use crate::compile::variant::CompiledVariant;
-use crate::compile::{compose, metadata};
 use sha2::{Digest, Sha256};
 use std::collections::BTreeMap;
 use weft_front::SourceDb;
@@ -341,7 +341,7 @@ pub(super) fn keyword_names(m: &Material, inst: &ResolvedInstance) -> BTreeMap<S
 fn scene_inputs_hash(scene: &ResolvedScene, db: &SourceDb) -> String {
     let mut h = Sha256::new();
     h.update(env!("CARGO_PKG_VERSION"));
-    h.update(compose::ENGINE_INTERFACE);
+    h.update(crate::compile::engine_binding::ENGINE_INTERFACE);
     h.update(db.text(scene.manifest.file));
     for m in &scene.materials {
         h.update(crate::compile::material::inputs_hash(m, db));

@@ -7,8 +7,7 @@
 
 use super::GltfError;
 use super::accessors::{Allowed, Norm, check_accessor, quantized, read_finite};
-pub use super::document::GPU_INSTANCING;
-use super::document::GltfFile;
+use super::document::{GPU_INSTANCING, GltfFile};
 use super::transform::Mat4;
 use gltf::accessor::{DataType, Dimensions};
 use serde_json::Value;
@@ -19,7 +18,7 @@ use serde_json::Value;
 const TRANSFORM_ATTRIBUTES: [&str; 3] = ["TRANSLATION", "ROTATION", "SCALE"];
 
 /// The JSON pointer of a node's extension object.
-pub fn pointer(node: usize) -> String {
+fn pointer(node: usize) -> String {
     format!("/nodes/{node}/extensions/{GPU_INSTANCING}")
 }
 
@@ -76,7 +75,6 @@ pub fn instance_transforms(
     let Some(attributes) = extension.get("attributes").and_then(Value::as_object) else {
         return Err(file.error(&at, "the extension has no `attributes` object".into(), hint));
     };
-    let accessors: Vec<gltf::Accessor> = file.document.accessors().collect();
     let mut streams: Vec<(&str, gltf::Accessor)> = Vec::new();
     for (name, index) in attributes {
         let attribute_at = format!("{at}/attributes/{name}");
@@ -92,7 +90,7 @@ pub fn instance_transforms(
         }
         let accessor = index
             .as_u64()
-            .and_then(|i| accessors.get(usize::try_from(i).ok()?))
+            .and_then(|i| file.document.accessors().nth(usize::try_from(i).ok()?))
             .ok_or_else(|| {
                 file.error(
                     &attribute_at,
@@ -100,7 +98,7 @@ pub fn instance_transforms(
                     hint,
                 )
             })?;
-        streams.push((name, accessor.clone()));
+        streams.push((name, accessor));
     }
     // Only application attributes: every copy is the node's own, in one
     // place, so one draw shows them all.

@@ -8,7 +8,7 @@
 //! `weft build --scene x.glb --print-manifest` shows it.
 
 use super::document::GltfFile;
-use super::instancing::{GPU_INSTANCING, instance_transforms};
+use super::instancing::instance_transforms;
 use super::materials::{MaterialMapping, float, map_material, toml_string};
 use super::transform::{IDENTITY, Mat4, mul, normalize, transform_point};
 use super::{GltfError, Warnings};
@@ -187,16 +187,18 @@ fn drawn_primitives(file: &GltfFile) -> Result<(Vec<Draw>, Placed), GltfError> {
             ));
         }
         placed.push((i, world));
+        // EXT_mesh_gpu_instancing: a copy per instance, each placed by the
+        // node's world transform after its own (an error on a node it does
+        // not fit, drawn or not).
+        let primitives = node.mesh().map_or(1, |m| m.primitives().count());
+        let room = MAX_INSTANCES.saturating_sub(draws.len()) / primitives.max(1);
+        let copies = instance_transforms(file, &node, room)?;
         if let Some(mesh) = node.mesh() {
             let base = snake_name(
                 node.name().or(mesh.name()).unwrap_or(""),
                 &format!("node{i}"),
             );
-            let count = mesh.primitives().count();
-            // EXT_mesh_gpu_instancing: a copy per instance, each placed by
-            // the node's world transform after its own.
-            let room = MAX_INSTANCES.saturating_sub(draws.len()) / count.max(1);
-            let copies = match instance_transforms(file, &node, room)? {
+            let copies = match copies {
                 Some(copies) => copies
                     .iter()
                     .enumerate()
@@ -206,7 +208,7 @@ fn drawn_primitives(file: &GltfFile) -> Result<(Vec<Draw>, Placed), GltfError> {
             };
             for (suffix, world) in copies {
                 for prim in mesh.primitives() {
-                    let name = if count > 1 {
+                    let name = if primitives > 1 {
                         format!("{base}_p{}{suffix}", prim.index())
                     } else {
                         format!("{base}{suffix}")
@@ -224,8 +226,6 @@ fn drawn_primitives(file: &GltfFile) -> Result<(Vec<Draw>, Placed), GltfError> {
                     });
                 }
             }
-        } else if node.extension_value(GPU_INSTANCING).is_some() {
-            instance_transforms(file, &node, 0)?;
         }
         let children: Vec<_> = node.children().collect();
         for child in children.into_iter().rev() {

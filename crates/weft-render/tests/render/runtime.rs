@@ -617,7 +617,7 @@ fn lut_location_matches_the_toolchain() {
 
 #[test]
 fn sheen_lut_is_bound_when_the_engine_interface_declares_it() {
-    if !weft_compiler::compose::ENGINE_INTERFACE.contains("weft_sheen_lut") {
+    if !weft_compiler::engine_binding::ENGINE_INTERFACE.contains("weft_sheen_lut") {
         return; // engine interface without a sheen table: nothing to bind
     }
     // A probe material that shows the table's value at (N.V, r) = (0.5, 0.5).
