@@ -423,3 +423,74 @@ fn every_scene_states_the_light_it_is_drawn_with() {
         "no shipped scene exercises the default light"
     );
 }
+
+/// `[static_lighting]` (docs/scenes.md): a scene that states it holds its
+/// light and SH in every shader. The shipped ones state the SH of the sky
+/// the renderer binds, bit for bit, and the renderer uploads those; their
+/// shaders read neither the frame's light nor its SH (drawn with another
+/// light and black SH, the picture does not move by one bit), while the
+/// generic variants, which still read the frame, do change; and a scene
+/// without it still reads both.
+#[test]
+fn static_lighting_is_folded_into_the_shaders() {
+    let _gpu = weft_tests::gpu_serial();
+    let sky = weft_render::EnvironmentMaps::sky(&weft_render::SkyParams::default()).sh;
+    let frame_reads = |scene: &SceneFile| -> Vec<String> {
+        let mut reads = Vec::new();
+        for shader in &scene.metadata.shaders {
+            let wgsl = std::fs::read_to_string(scene.dir.join(format!("{}.wgsl", shader.id)))
+                .unwrap_or_else(|e| panic!("{}: {e}", shader.id));
+            for member in ["light_direction", "light_color", "sh"] {
+                if wgsl.contains(&format!("weft_frame.{member};"))
+                    || wgsl.contains(&format!("weft_frame.{member}."))
+                    || wgsl.contains(&format!("weft_frame.{member}["))
+                {
+                    reads.push(format!("{} reads weft_frame.{member}", shader.id));
+                }
+            }
+        }
+        reads
+    };
+    let mut h = harness();
+    let (mut fixed, mut dynamic) = (0, 0);
+    for (name, scene) in scenes() {
+        let Some(lighting) = &scene.metadata.static_lighting else {
+            dynamic += 1;
+            assert!(
+                !frame_reads(&scene).is_empty(),
+                "{name}: lit at run time, yet no shader reads the frame's light or SH"
+            );
+            continue;
+        };
+        fixed += 1;
+        let sh = lighting.sh.unwrap_or_else(|| panic!("{name}: no `sh`"));
+        assert_eq!(
+            sh.map(|rgb| rgb.map(|c| c as f32)),
+            sky,
+            "{name}: `[static_lighting] sh` is not the default sky's SH"
+        );
+        assert_eq!(scene.lighting.static_sh, Some(sky), "{name}");
+        assert_eq!(frame_reads(&scene), Vec::<String>::new(), "{name}");
+
+        let mut moved = scene.clone();
+        moved.lighting.light.direction = [0.3, -0.8, 0.5];
+        moved.lighting.light.radiance = [0.5, 2.0, 9.0];
+        moved.lighting.static_sh = Some([[0.0; 3]; 9]);
+        let folded = render(&mut h, &name, &scene, &SceneShaders::Specialised);
+        let folded_moved = render(&mut h, &name, &moved, &SceneShaders::Specialised);
+        assert!(
+            folded.pixels == folded_moved.pixels,
+            "{name}: the specialised shaders still read the frame's light or SH"
+        );
+        let generic = render(&mut h, &name, &scene, &library());
+        let generic_moved = render(&mut h, &name, &moved, &library());
+        assert!(
+            fold_error(&generic, &generic_moved) > 0.05,
+            "{name}: the generic variants ignore the moved light and SH"
+        );
+    }
+    assert!(
+        fixed > 0 && dynamic > 0,
+        "{fixed} static, {dynamic} dynamic"
+    );
+}

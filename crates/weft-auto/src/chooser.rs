@@ -624,6 +624,7 @@ fn instance_scene(
         },
         camera,
         light: None,
+        static_lighting: None,
         shaders: Vec::new(),
         languages: meta.languages.clone(),
         conventions: meta.conventions.clone(),

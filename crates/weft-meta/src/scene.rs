@@ -31,8 +31,9 @@ pub const SCENE_SCHEMA_VERSION: u32 = 3;
 /// matrix (translation, rotation and scale are then read back from it).
 /// 5: `funnel`. 6: `funnel.modelled`, the GPU model's cost of the
 /// instances against their generic variants (`weft build --scene …
-/// --gpu-model`).
-pub const SCENE_SCHEMA_MINOR: u32 = 6;
+/// --gpu-model`). 7: `static_lighting`, the lighting a scene folds into
+/// its shaders.
+pub const SCENE_SCHEMA_MINOR: u32 = 7;
 
 /// The most instances a scene may have (a written manifest's and a glTF
 /// file's alike, `EXT_mesh_gpu_instancing` copies included). Instances that
@@ -110,6 +111,15 @@ pub struct SceneMetadata {
     /// `features.directional_lights` 0 no shader reads it.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub light: Option<SceneLight>,
+    /// Lighting folded into every shader of the scene (the manifest's
+    /// `[static_lighting]`, scene schema 3.7). Present, the shaders read
+    /// neither `weft_frame.light_direction` nor `light_color` (they hold
+    /// `light`) nor, with `sh`, `weft_frame.sh`: set the frame to these
+    /// values (a generic variant drawn beside them still reads it); changing
+    /// them at run time changes nothing in this scene. Absent: the engine
+    /// lights the scene at run time.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub static_lighting: Option<StaticLighting>,
     /// Unique specialised shaders, in first-use order.
     pub shaders: Vec<SceneShader>,
     /// Instances in manifest order (draw them by pass queue, then this order).
@@ -182,6 +192,16 @@ pub struct SceneFeatures {
     pub sh_ambient: bool,
     /// Directional lights (0 or 1 in engine interface v1).
     pub directional_lights: u32,
+}
+
+/// The lighting a scene's shaders hold as constants (`[static_lighting]`).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
+pub struct StaticLighting {
+    /// The SH ambient's nine RGB coefficients folded in (`weft_frame.sh[i].xyz`,
+    /// docs/engine-interface.md "SH"); absent when the scene has no SH ambient.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sh: Option<[[f64; 3]; 9]>,
 }
 
 /// The camera for previews and tests: perspective, +y up.

@@ -107,6 +107,10 @@ pub struct SceneLighting {
     pub sh_ambient: bool,
     /// The main light (radiance zero when the scene has no directional light).
     pub light: Light,
+    /// SH coefficients the scene's shaders hold as constants (the metadata's
+    /// `static_lighting.sh`): uploaded in place of the sky's own, so that a
+    /// generic shader drawn for comparison sees what the folded ones do.
+    pub static_sh: Option<[[f32; 3]; 9]>,
 }
 
 impl SceneLighting {
@@ -121,6 +125,7 @@ impl SceneLighting {
             environment: features.environment,
             sh_ambient: features.sh_ambient,
             light,
+            static_sh: None,
         }
     }
 
@@ -129,6 +134,11 @@ impl SceneLighting {
     /// in what an older file left out).
     pub fn from_metadata(meta: &SceneMetadata) -> SceneLighting {
         let mut lighting = SceneLighting::from_features(&meta.features);
+        lighting.static_sh = meta
+            .static_lighting
+            .as_ref()
+            .and_then(|s| s.sh)
+            .map(|sh| sh.map(|rgb| rgb.map(|c| c as f32)));
         let l = meta.light_used();
         lighting.light.direction = l.direction.map(|c| c as f32);
         if let (Some(c), true) = (l.color, meta.features.directional_lights > 0) {
@@ -328,7 +338,7 @@ impl Renderer {
             view: cube.view.clone(),
             mip_count: cube.mip_count,
             sh: if lighting.sh_ambient {
-                self.env.sh
+                lighting.static_sh.unwrap_or(self.env.sh)
             } else {
                 [[0.0; 3]; 9]
             },

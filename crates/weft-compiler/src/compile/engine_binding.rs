@@ -24,6 +24,10 @@ pub use weft_meta::engine::{FRAME_GROUP, OBJECT_GROUP};
 
 pub const ENGINE_INTERFACE: &str = include_str!("wgsl/engine_interface.wgsl");
 
+/// The frame uniform's variable in `engine_interface.wgsl` (group 0,
+/// binding 0), whose light and SH members a scene with static lighting folds.
+pub const FRAME_VAR: &str = "weft_frame";
+
 /// The engine-feature overrides of `engine_interface.wgsl` and the values a
 /// library (scene-independent) variant is built with: everything provided.
 /// Scene builds fix them to what the scene provides (`scene::features`).

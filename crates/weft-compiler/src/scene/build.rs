@@ -7,7 +7,7 @@
 
 use super::checks;
 use super::fold::{Folded, fold};
-use super::instance::{InstanceValues, instance_values};
+use super::instance::{InstanceValues, instance_values, static_lighting_members};
 use super::record::{self, BuiltInstance, Recorded, keyword_names};
 use super::tiers::{AutoTierRequest, TierChooser};
 use crate::compile::compose::{self, validator};
@@ -273,12 +273,15 @@ pub fn build_resolved_scene(
     let modules = material_modules(&scene, db, diags)?;
     let engine = compose::engine_interface_file(db);
     let features = scene.manifest.features;
+    let static_lighting = static_lighting_members(&scene.manifest);
     let values: Vec<InstanceValues> = scene
         .instances
         .iter()
         .zip(&tiers)
         .map(|(inst, (tier, _))| {
-            instance_values(&scene.materials[inst.material], inst, *tier, &features)
+            let mut v = instance_values(&scene.materials[inst.material], inst, *tier, &features);
+            v.fold.frame_members = static_lighting.clone();
+            v
         })
         .collect();
     let (unique, spec) = specialisations(&scene, &tiers, &values);

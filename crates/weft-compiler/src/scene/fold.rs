@@ -2,9 +2,11 @@
 //!
 //! The generic variant reads every parameter from the material uniform. For a
 //! scene instance most parameters are constants of the scene, so:
-//! 1. loads of folded uniform members (and of components of them) become
-//!    module constants; samples of textures left at a built-in default become
-//!    the constant texel the sample would return;
+//! 1. loads of folded uniform members (and of components and elements of
+//!    them) become module constants — the material uniform's, and with
+//!    `[static_lighting]` the frame uniform's light and SH; samples of
+//!    textures left at a built-in default become the constant texel the
+//!    sample would return;
 //! 2. every override (tier, every keyword, the engine features) becomes a
 //!    literal;
 //! 3. round after round until nothing changes (`fold_to_fixed_point`):
@@ -37,6 +39,7 @@ use super::dead_calls::remove_dead_calls;
 use super::evaluate::{anonymous_constant, evaluate_constants, filter_emits};
 use super::identities::simplify_identities;
 use super::locals::forward_locals;
+use crate::compile::engine_binding::FRAME_VAR;
 use crate::compile::specialise::prune_function;
 use naga::{
     AddressSpace, Constant, Expression, Handle, Literal, Module, Span, StructMember, Type,
@@ -63,6 +66,11 @@ pub struct FoldRequest {
     pub textures: BTreeMap<String, [f32; 4]>,
     /// The material uniform variable's name.
     pub uniform_var: String,
+    /// Frame-uniform (`weft_frame`, group 0) member -> the value to fold in
+    /// its place: a scene with `[static_lighting]` fixes the light and the SH
+    /// (docs/scenes.md). The frame uniform keeps its layout (engines bind
+    /// group 0 whole); only its reads become constants.
+    pub frame_members: BTreeMap<String, ConstValue>,
     /// Entry points of the passes the instance draws; the module's others
     /// (passes it does not draw, a library's unused `vs_main`) are dropped.
     /// `None` keeps every entry point (a module folded on its own).
@@ -77,41 +85,61 @@ pub struct Folded {
     pub kept_in_uniform: BTreeSet<String>,
 }
 
-pub fn fold(module: &Module, request: &FoldRequest) -> Result<Folded, String> {
-    let mut module = module.clone();
-    let uniform = module.global_variables.iter().find_map(|(h, g)| {
-        (g.space == AddressSpace::Uniform && g.name.as_deref() == Some(&request.uniform_var))
-            .then_some(h)
-    });
-    let members: Vec<StructMember> =
-        match uniform.map(|h| &module.types[module.global_variables[h].ty].inner) {
-            Some(TypeInner::Struct { members, .. }) => members.clone(),
-            _ => Vec::new(),
-        };
-    let member_index = |name: &str| members.iter().position(|m| m.name.as_deref() == Some(name));
+/// A uniform variable some of whose members fold to constants.
+struct FoldedUniform {
+    var: Handle<naga::GlobalVariable>,
+    members: Vec<StructMember>,
+    /// Member index -> its value.
+    folded: BTreeMap<u32, ConstValue>,
+}
 
-    // Members read through a path `fold` cannot see (a dynamic index, the
-    // whole struct) are kept in the uniform.
+/// The uniform `var_name` and the members of `values` it can fold; and the
+/// names of those it cannot (read through a path `fold` cannot see: a
+/// dynamic index, the whole struct), which stay in the uniform.
+fn folded_uniform(
+    module: &Module,
+    var_name: &str,
+    values: &BTreeMap<String, ConstValue>,
+) -> (Option<FoldedUniform>, BTreeSet<String>) {
+    let Some(var) = module.global_variables.iter().find_map(|(h, g)| {
+        (g.space == AddressSpace::Uniform && g.name.as_deref() == Some(var_name)).then_some(h)
+    }) else {
+        return (None, BTreeSet::new());
+    };
+    let members: Vec<StructMember> = match &module.types[module.global_variables[var].ty].inner {
+        TypeInner::Struct { members, .. } => members.clone(),
+        _ => Vec::new(),
+    };
     let mut unfoldable = BTreeSet::new();
-    if let Some(u) = uniform {
-        for f in functions(&module) {
-            unfoldable.extend(unfoldable_members(f, u));
+    for f in functions(module) {
+        unfoldable.extend(unfoldable_members(f, var));
+    }
+    let mut folded = BTreeMap::new();
+    let mut kept = BTreeSet::new();
+    for (name, v) in values {
+        let Some(i) = members.iter().position(|m| m.name.as_deref() == Some(name)) else {
+            continue;
+        };
+        if unfoldable.contains(&(i as u32)) {
+            kept.insert(name.clone());
+        } else {
+            folded.insert(i as u32, v.clone());
         }
     }
-    let folded_members: BTreeMap<u32, &ConstValue> = request
-        .members
-        .iter()
-        .filter_map(|(name, v)| {
-            let i = member_index(name)? as u32;
-            (!unfoldable.contains(&i)).then_some((i, v))
-        })
-        .collect();
-    let kept_in_uniform = request
-        .members
-        .keys()
-        .filter(|n| member_index(n).is_some_and(|i| unfoldable.contains(&(i as u32))))
-        .cloned()
-        .collect();
+    let uniform = FoldedUniform {
+        var,
+        members,
+        folded,
+    };
+    (Some(uniform), kept)
+}
+
+pub fn fold(module: &Module, request: &FoldRequest) -> Result<Folded, String> {
+    let mut module = module.clone();
+    let (material, kept_in_uniform) =
+        folded_uniform(&module, &request.uniform_var, &request.members);
+    let (frame, _) = folded_uniform(&module, FRAME_VAR, &request.frame_members);
+    let uniforms: Vec<FoldedUniform> = material.into_iter().chain(frame).collect();
 
     let textures: HashMap<Handle<naga::GlobalVariable>, [f32; 4]> = module
         .global_variables
@@ -123,15 +151,7 @@ pub fn fold(module: &Module, request: &FoldRequest) -> Result<Folded, String> {
     let mut constants = ConstantPool::default();
     let mut fns = std::mem::take(&mut module.functions);
     for (_, f) in fns.iter_mut() {
-        replace_reads(
-            &mut module,
-            f,
-            uniform,
-            &members,
-            &folded_members,
-            &textures,
-            &mut constants,
-        )?;
+        replace_reads(&mut module, f, &uniforms, &textures, &mut constants)?;
     }
     module.functions = fns;
     let mut eps = std::mem::take(&mut module.entry_points);
@@ -139,9 +159,7 @@ pub fn fold(module: &Module, request: &FoldRequest) -> Result<Folded, String> {
         replace_reads(
             &mut module,
             &mut ep.function,
-            uniform,
-            &members,
-            &folded_members,
+            &uniforms,
             &textures,
             &mut constants,
         )?;
@@ -298,7 +316,7 @@ fn unfoldable_members(f: &naga::Function, uniform: Handle<naga::GlobalVariable>)
 /// Module constants created for folded values, one per (member, component path).
 #[derive(Default)]
 struct ConstantPool {
-    by_path: HashMap<Vec<u32>, Handle<Constant>>,
+    by_path: HashMap<(Handle<naga::GlobalVariable>, Vec<u32>), Handle<Constant>>,
     texels: HashMap<[u32; 4], Handle<Constant>>,
 }
 
@@ -311,40 +329,104 @@ fn scalar_literal(v: &ConstValue, component: usize) -> Option<Literal> {
     }
 }
 
-/// A global expression of type `ty` holding `v` (or one component of it).
+/// How many scalars a value of type `ty` holds (scalars, vectors and
+/// fixed-size arrays of them: what a uniform member folds as).
+fn scalar_count(module: &Module, ty: Handle<Type>) -> Result<usize, String> {
+    match &module.types[ty].inner {
+        TypeInner::Scalar(_) => Ok(1),
+        TypeInner::Vector { size, .. } => Ok(*size as usize),
+        TypeInner::Array {
+            base,
+            size: naga::ArraySize::Constant(n),
+            ..
+        } => Ok(n.get() as usize * scalar_count(module, *base)?),
+        inner => Err(format!("cannot fold a uniform member of type {inner:?}")),
+    }
+}
+
+/// The type reached from `ty` through the constant indices `path`, and the
+/// position of its first scalar in the member's flattened value.
+fn reached(
+    module: &mut Module,
+    ty: Handle<Type>,
+    path: &[u32],
+) -> Result<(Handle<Type>, usize), String> {
+    let mut ty = ty;
+    let mut first = 0;
+    for &i in path {
+        match module.types[ty].inner.clone() {
+            TypeInner::Vector { scalar, .. } => {
+                first += i as usize;
+                ty = module.types.insert(
+                    Type {
+                        name: None,
+                        inner: TypeInner::Scalar(scalar),
+                    },
+                    Span::UNDEFINED,
+                );
+            }
+            TypeInner::Array { base, .. } => {
+                first += i as usize * scalar_count(module, base)?;
+                ty = base;
+            }
+            inner => {
+                return Err(format!(
+                    "cannot index into a uniform member of type {inner:?}"
+                ));
+            }
+        }
+    }
+    Ok((ty, first))
+}
+
+/// A global expression of type `ty` holding the scalars of `v` from `first` on.
 fn const_expr(
     module: &mut Module,
     ty: Handle<Type>,
     v: &ConstValue,
-    component: Option<u32>,
+    first: usize,
 ) -> Result<Handle<Expression>, String> {
-    let mut lit = |c: usize| -> Result<Handle<Expression>, String> {
-        let l = scalar_literal(v, c).ok_or_else(|| format!("value {v:?} has no component {c}"))?;
-        Ok(module
-            .global_expressions
-            .append(Expression::Literal(l), Span::UNDEFINED))
-    };
-    match (&module.types[ty].inner, component) {
-        (TypeInner::Scalar(_), Some(c)) => lit(c as usize),
-        (TypeInner::Scalar(_), None) => lit(0),
-        (TypeInner::Vector { size, .. }, None) => {
-            let n = *size as usize;
-            let components = (0..n).map(&mut lit).collect::<Result<Vec<_>, _>>()?;
-            Ok(module
+    let components = match module.types[ty].inner.clone() {
+        TypeInner::Scalar(_) => {
+            let l = scalar_literal(v, first)
+                .ok_or_else(|| format!("value {v:?} has no component {first}"))?;
+            return Ok(module
                 .global_expressions
-                .append(Expression::Compose { ty, components }, Span::UNDEFINED))
+                .append(Expression::Literal(l), Span::UNDEFINED));
         }
-        (inner, _) => Err(format!("cannot fold a uniform member of type {inner:?}")),
-    }
+        TypeInner::Vector { size, scalar } => {
+            let scalar_ty = module.types.insert(
+                Type {
+                    name: None,
+                    inner: TypeInner::Scalar(scalar),
+                },
+                Span::UNDEFINED,
+            );
+            (0..size as usize)
+                .map(|c| const_expr(module, scalar_ty, v, first + c))
+                .collect::<Result<Vec<_>, _>>()?
+        }
+        TypeInner::Array {
+            base,
+            size: naga::ArraySize::Constant(n),
+            ..
+        } => {
+            let step = scalar_count(module, base)?;
+            (0..n.get() as usize)
+                .map(|i| const_expr(module, base, v, first + i * step))
+                .collect::<Result<Vec<_>, _>>()?
+        }
+        inner => return Err(format!("cannot fold a uniform member of type {inner:?}")),
+    };
+    Ok(module
+        .global_expressions
+        .append(Expression::Compose { ty, components }, Span::UNDEFINED))
 }
 
-#[allow(clippy::too_many_arguments)]
 fn replace_reads(
     module: &mut Module,
     f: &mut naga::Function,
-    uniform: Option<Handle<naga::GlobalVariable>>,
-    members: &[StructMember],
-    folded: &BTreeMap<u32, &ConstValue>,
+    uniforms: &[FoldedUniform],
     textures: &HashMap<Handle<naga::GlobalVariable>, [f32; 4]>,
     pool: &mut ConstantPool,
 ) -> Result<(), String> {
@@ -352,38 +434,26 @@ fn replace_reads(
     for h in handles {
         let replacement = match f.expressions[h] {
             Expression::Load { pointer } => {
-                let Some(u) = uniform else { continue };
-                let Some(path) = access_path(&f.expressions, u, pointer) else {
+                let Some((u, path)) = uniforms
+                    .iter()
+                    .find_map(|u| Some((u, access_path(&f.expressions, u.var, pointer)?)))
+                else {
                     continue;
                 };
                 let Some((&member, rest)) = path.split_first() else {
                     continue;
                 };
-                let Some(value) = folded.get(&member) else {
+                let Some(value) = u.folded.get(&member) else {
                     continue;
                 };
-                if rest.len() > 1 {
-                    return Err(format!(
-                        "unexpected access depth into uniform member {member}"
-                    ));
-                }
-                if let Some(&c) = pool.by_path.get(&path) {
+                let key = (u.var, path.clone());
+                if let Some(&c) = pool.by_path.get(&key) {
                     Expression::Constant(c)
                 } else {
-                    let member_ty = members[member as usize].ty;
-                    let ty = match (&module.types[member_ty].inner, rest.first()) {
-                        (TypeInner::Vector { scalar, .. }, Some(_)) => module.types.insert(
-                            Type {
-                                name: None,
-                                inner: TypeInner::Scalar(*scalar),
-                            },
-                            Span::UNDEFINED,
-                        ),
-                        _ => member_ty,
-                    };
-                    let init = const_expr(module, ty, value, rest.first().copied())?;
+                    let (ty, first) = reached(module, u.members[member as usize].ty, rest)?;
+                    let init = const_expr(module, ty, value, first)?;
                     let c = anonymous_constant(module, ty, init);
-                    pool.by_path.insert(path, c);
+                    pool.by_path.insert(key, c);
                     Expression::Constant(c)
                 }
             }
@@ -414,7 +484,7 @@ fn replace_reads(
                             },
                             Span::UNDEFINED,
                         );
-                        let init = const_expr(module, ty, &ConstValue::F32(texel.to_vec()), None)?;
+                        let init = const_expr(module, ty, &ConstValue::F32(texel.to_vec()), 0)?;
                         let c = anonymous_constant(module, ty, init);
                         pool.texels.insert(key, c);
                         c
@@ -557,5 +627,58 @@ pub(super) mod test_support {
             wgsl
         );
         wgsl
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Static lighting: the frame uniform's vector and array-of-vector
+    /// members fold (a whole array loaded, one element, one component),
+    /// members not asked for stay reads, and the frame keeps its layout.
+    #[test]
+    fn frame_members_fold_and_the_frame_keeps_its_layout() {
+        let src = "
+            struct Frame { view: vec4<f32>, light_direction: vec4<f32>, sh: array<vec4<f32>, 2> }
+            @group(0) @binding(0) var<uniform> weft_frame: Frame;
+            @fragment fn fs_main() -> @location(0) vec4<f32> {
+                let sh = weft_frame.sh;
+                let a = sh[0].xyz + weft_frame.sh[1].xyz * weft_frame.sh[1].w;
+                return vec4<f32>(a * weft_frame.light_direction.y, weft_frame.view.x);
+            }";
+        let module = naga::front::wgsl::parse_str(src).unwrap();
+        let request = FoldRequest {
+            frame_members: BTreeMap::from([
+                (
+                    "light_direction".into(),
+                    ConstValue::F32(vec![0.0, 0.5, 0.0, 0.0]),
+                ),
+                (
+                    "sh".into(),
+                    ConstValue::F32(vec![1.0, 2.0, 3.0, 0.0, 4.0, 5.0, 6.0, 0.25]),
+                ),
+            ]),
+            ..Default::default()
+        };
+        let folded = fold(&module, &request).unwrap().module;
+        let info = crate::compile::compose::validator()
+            .validate(&folded)
+            .unwrap();
+        let wgsl = crate::compile::backends::emit_wgsl(&folded, &info).unwrap();
+        assert!(!wgsl.contains("weft_frame.sh"), "{wgsl}");
+        assert!(!wgsl.contains("weft_frame.light_direction"), "{wgsl}");
+        assert!(wgsl.contains("weft_frame.view"), "{wgsl}");
+        // (1, 2, 3) + (4, 5, 6) × 0.25, times 0.5, all evaluated at build time.
+        assert!(wgsl.contains("vec3<f32>(1f, 1.625f, 2.25f)"), "{wgsl}");
+        let frame = folded
+            .global_variables
+            .iter()
+            .find(|(_, g)| g.name.as_deref() == Some(FRAME_VAR))
+            .map(|(_, g)| &folded.types[g.ty].inner);
+        assert!(
+            matches!(frame, Some(TypeInner::Struct { members, span: 64 }) if members.len() == 3),
+            "{frame:?}"
+        );
     }
 }

@@ -12,7 +12,7 @@ use serde_json::{Value, json};
 use std::collections::BTreeMap;
 use weft_front::model::{Material, Param, ParamValue};
 use weft_front::samples;
-use weft_front::scene::model::{ResolvedInstance, SceneFeatures};
+use weft_front::scene::model::{ResolvedInstance, SceneFeatures, SceneManifest};
 use weft_front::variants::VariantKey;
 use weft_meta::uniform::{
     self, ParamValue as Upload, ScalarType, TILING_OFFSET_DEFAULT, TILING_OFFSET_TYPE,
@@ -61,6 +61,44 @@ fn encoded(
         _ => ConstValue::F32(words.map(f32::from_le_bytes).collect()),
     };
     Some((constant, value.to_json()))
+}
+
+/// The frame-uniform members a scene with `[static_lighting]` folds into
+/// every shader, as `weft-render` uploads them (`engine_uniforms.rs`): the
+/// light's direction normalised in f32 and its radiance (`light`, defaults
+/// filled in, as the scene metadata states it), and the SH coefficients
+/// (`sh[i].xyz`, w = 0). Empty without `[static_lighting]`.
+pub fn static_lighting_members(manifest: &SceneManifest) -> BTreeMap<String, ConstValue> {
+    let mut out = BTreeMap::new();
+    let Some(fixed) = &manifest.static_lighting else {
+        return out;
+    };
+    let light = weft_meta::scene::SceneLight::with_defaults(
+        manifest.light.as_ref().map(|l| l.direction),
+        manifest.light.as_ref().and_then(|l| l.color),
+    );
+    let d = light.direction.map(|c| c as f32);
+    let length = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+    let unit = d.map(|c| c * (1.0 / length));
+    out.insert(
+        "light_direction".into(),
+        ConstValue::F32(vec![unit[0], unit[1], unit[2], 0.0]),
+    );
+    if manifest.features.directional_lights > 0 {
+        let c = light.color.unwrap_or(weft_meta::scene::DEFAULT_LIGHT_COLOR);
+        out.insert(
+            "light_color".into(),
+            ConstValue::F32(vec![c[0] as f32, c[1] as f32, c[2] as f32, 0.0]),
+        );
+    }
+    if let Some(sh) = &fixed.sh {
+        let flat = sh
+            .iter()
+            .flat_map(|rgb| [rgb[0] as f32, rgb[1] as f32, rgb[2] as f32, 0.0])
+            .collect();
+        out.insert("sh".into(), ConstValue::F32(flat));
+    }
+    out
 }
 
 /// What one instance folds and what it still uploads.

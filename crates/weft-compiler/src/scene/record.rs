@@ -296,6 +296,10 @@ pub(super) fn assemble(
             manifest.light.as_ref().map(|l| l.direction),
             manifest.light.as_ref().and_then(|l| l.color),
         )),
+        static_lighting: manifest
+            .static_lighting
+            .as_ref()
+            .map(|s| weft_meta::scene::StaticLighting { sh: s.sh }),
         shaders,
         instances,
         languages: crate::compile::engine_binding::languages(),

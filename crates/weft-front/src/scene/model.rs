@@ -125,6 +125,16 @@ pub struct SceneLight {
     pub color: Option<[f64; 3]>,
 }
 
+/// `[static_lighting]`: the scene's lighting is fixed, so the build folds
+/// it into every shader — the main light (`[light]`, or weft's default) and,
+/// with SH ambient, these coefficients (docs/scenes.md).
+#[derive(Clone, Debug, PartialEq)]
+pub struct StaticLighting {
+    /// The SH ambient's nine RGB coefficients (`weft_frame.sh[i].xyz`,
+    /// docs/engine-interface.md, "SH"); `None` when the scene has no SH ambient.
+    pub sh: Option<[[f64; 3]; 9]>,
+}
+
 #[derive(Clone, Debug, PartialEq)]
 pub struct Camera {
     pub position: [f64; 3],
@@ -301,6 +311,8 @@ pub struct SceneManifest {
     /// The main light for previews and tests (`[light]`); the renderer's
     /// default light when absent.
     pub light: Option<SceneLight>,
+    /// `[static_lighting]`: the light and SH folded into the shaders.
+    pub static_lighting: Option<StaticLighting>,
     /// Fails the build when the scene needs more unique shaders.
     pub max_shaders: Option<Spanned<usize>>,
     /// The GPU family `tier = "auto"` costs tiers for (`[scene] gpu_family`).

@@ -8,13 +8,22 @@ mod instance;
 use super::model::*;
 use crate::diag::{Span, suggestion_listing};
 use crate::parse::parse_vertex_inputs;
-use crate::toml_reader::{Cx, Table, Value, expect_array, expect_string, type_error};
+use crate::toml_reader::{
+    Cx, Table, Value, expect_array, expect_numbers, expect_string, type_error,
+};
 use codespan_reporting::diagnostic::Label;
 use instance::{check_unique_names, parse_instance};
 use std::path::{Path, PathBuf};
 use toml::de::{DeTable, DeValue};
 
-pub const TOP_KEYS: &[&str] = &["scene", "camera", "light", "instances", "gltf"];
+pub const TOP_KEYS: &[&str] = &[
+    "scene",
+    "camera",
+    "light",
+    "static_lighting",
+    "instances",
+    "gltf",
+];
 pub const SCENE_KEYS: &[&str] = &[
     "name",
     "description",
@@ -28,6 +37,7 @@ pub const SCENE_KEYS: &[&str] = &[
 ];
 pub const CAMERA_KEYS: &[&str] = &["position", "target", "fov_degrees"];
 pub const LIGHT_KEYS: &[&str] = &["direction", "color"];
+pub const STATIC_LIGHTING_KEYS: &[&str] = &["sh"];
 
 pub use weft_meta::scene::MAX_INSTANCES;
 pub const INSTANCE_KEYS: &[&str] = &[
@@ -252,6 +262,10 @@ pub fn parse_manifest<'a, 'i>(
         .get("light")
         .and_then(|v| Table::new(v, "[light]", cx))
         .and_then(|t| parse_light(&t, cx));
+    let static_lighting = top
+        .get("static_lighting")
+        .and_then(|v| Table::new(v, "[static_lighting]", cx))
+        .and_then(|t| parse_static_lighting(&t, &features, cx));
 
     let mut manifest = SceneManifest {
         name,
@@ -267,6 +281,7 @@ pub fn parse_manifest<'a, 'i>(
         },
         camera,
         light,
+        static_lighting,
         max_shaders,
         gpu_family,
         instances: Vec::new(),
@@ -488,6 +503,71 @@ fn parse_light(t: &Table, cx: &mut Cx) -> Option<SceneLight> {
         direction,
         color: color?,
     })
+}
+
+/// `[static_lighting]`: `sh` (nine `[r, g, b]`) exactly when the scene has
+/// SH ambient, each coefficient a finite f32.
+fn parse_static_lighting(
+    t: &Table,
+    features: &SceneFeatures,
+    cx: &mut Cx,
+) -> Option<StaticLighting> {
+    t.check_keys(STATIC_LIGHTING_KEYS, cx);
+    let Some(value) = t.get("sh") else {
+        if features.sh_ambient {
+            cx.error_with_note(
+                "missing-key",
+                "[static_lighting] needs the SH ambient's coefficients, `sh`",
+                t.span.clone(),
+                "no `sh` here",
+                "give the nine [r, g, b] coefficients of your ambient probe \
+                 (docs/engine-interface.md, \"SH\"), or set `sh_ambient = false` in [scene]",
+            );
+            return None;
+        }
+        return Some(StaticLighting { sh: None });
+    };
+    let span = value.span();
+    if !features.sh_ambient {
+        cx.error_with_note(
+            "unused-key",
+            "`sh` of [static_lighting] is given, but the scene has no SH ambient",
+            span,
+            "never read",
+            "remove `sh`, or set `sh_ambient = true` in [scene]",
+        );
+        return None;
+    }
+    let rows = expect_array(value, "`sh` of [static_lighting]", cx)?;
+    if rows.len() != 9 {
+        cx.error_with_note(
+            "wrong-type",
+            "`sh` of [static_lighting] must be 9 coefficients [r, g, b]",
+            span,
+            format!("{} here", rows.len()),
+            "L2 SH has nine: Y00, Y1-1, Y10, Y11, Y2-2, Y2-1, Y20, Y21, Y22 (docs/engine-interface.md)",
+        );
+        return None;
+    }
+    let mut sh = [[0.0; 3]; 9];
+    for (i, row) in rows.iter().enumerate() {
+        let what = format!("`sh[{i}]` of [static_lighting]");
+        let nums = expect_numbers(row, &what, cx)?;
+        let rgb = <[f64; 3]>::try_from(nums.as_slice()).ok();
+        match rgb {
+            Some(rgb) if rgb.iter().all(|x| fits_f32(*x)) => sh[i] = rgb,
+            _ => {
+                cx.error(
+                    "wrong-type",
+                    format!("{what} must be 3 finite numbers [r, g, b] within the f32 range"),
+                    row.span(),
+                    "not an RGB coefficient",
+                );
+                return None;
+            }
+        }
+    }
+    Some(StaticLighting { sh: Some(sh) })
 }
 
 /// `color` of `[light]`: `Some(None)` when absent, `None` when wrong.

@@ -1,0 +1,340 @@
+// language: metal2.1
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using metal::uint;
+
+struct type_4 {
+    metal::float4 inner[9];
+};
+struct WeftFrame {
+    metal::float4x4 view_proj;
+    metal::float4x4 view;
+    metal::float4 camera_position;
+    metal::float4 light_direction;
+    metal::float4 light_color;
+    type_4 sh;
+    metal::float4 params;
+    metal::float4 viewport;
+};
+struct WeftObject {
+    metal::float4x4 model;
+    metal::float4x4 normal_matrix;
+};
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
+struct WeftVertexInput {
+    metal::float3 position;
+    metal::float3 normal;
+    metal::float4 tangent;
+    metal::float2 uv0_;
+    char _pad4[8];
+};
+struct WeftVaryings {
+    metal::float4 clip_position;
+    metal::float3 world_position;
+    metal::float3 world_normal;
+    metal::float4 world_tangent;
+    metal::float2 uv0_;
+    char _pad5[8];
+};
+struct WeftMaterial {
+    metal::float4 scatter_color;
+};
+constant float WEFT_PI = 3.1415927;
+constant float WEFT_INV_PI = 0.31830987;
+constant uint TIER_FAST = 0u;
+constant uint TIER_REFERENCE = 1u;
+constant uint TIER_SEED = 2u;
+constant float WEFT_MIN_ROUGHNESS = 0.045;
+constant float WEFT_MIN_N_DOT = 0.0001;
+constant float WEFT_MAX_HALF = 65504.0;
+constant float WEFT_DIELECTRIC_F0_ = 0.04;
+constant float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
+
+float weft_max3_(
+    metal::float3 v
+) {
+    return metal::max(v.x, metal::max(v.y, v.z));
+}
+
+float weft_clamp_cos(
+    float c
+) {
+    return metal::clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+metal::float3 weft_safe_normalize(
+    metal::float3 v_1,
+    metal::float3 fallback
+) {
+    float len2_ = metal::dot(v_1, v_1);
+    return (len2_ > 0.00000000000000000001) ? (v_1 * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
+}
+
+metal::float3 weft_sh_irradiance(
+    metal::float3 n_1
+) {
+    metal::float3 e = {};
+    e = metal::float3(0.27778354, 0.32136026, 0.4497644);
+    e = metal::float3(0.27778354, 0.32136026, 0.4497644) + (metal::float3(0.2192843, 0.34164187, 0.663193) * (0.488603 * n_1.y));
+    metal::float3 _e11 = e;
+    e = _e11 + (metal::float3(0.1352113, 0.12394369, 0.10366199) * (0.488603 * n_1.z));
+    metal::float3 _e18 = e;
+    e = _e18 + (metal::float3(-0.14969625, -0.13722156, -0.11476713) * (0.488603 * n_1.x));
+    metal::float3 _e25 = e;
+    e = _e25 + (metal::float3(-0.064625785, -0.059240304, -0.049546435) * ((1.092548 * n_1.x) * n_1.y));
+    metal::float3 _e34 = e;
+    e = _e34 + (metal::float3(0.05837178, 0.053507466, 0.044751696) * ((1.092548 * n_1.y) * n_1.z));
+    metal::float3 _e43 = e;
+    e = _e43 + (metal::float3(0.025110306, 0.023586905, 0.01273896) * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0)));
+    metal::float3 _e56 = e;
+    e = _e56 + (metal::float3(-0.06322707, -0.057958152, -0.04847409) * ((1.092548 * n_1.x) * n_1.z));
+    metal::float3 _e65 = e;
+    e = _e65 + (metal::float3(0.056382716, 0.05266991, 0.031947177) * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y))));
+    metal::float3 _e78 = e;
+    return metal::max(_e78, metal::float3(0.0));
+}
+
+metal::float3 weft_safe_normalize_k8_(
+    metal::float3 v_2
+) {
+    float len2_1 = metal::dot(v_2, v_2);
+    return (len2_1 > 0.00000000000000000001) ? (v_2 * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : metal::float3(0.0, 0.0, 1.0);
+}
+
+metal::float3 weft_view_direction_k2_(
+    metal::float3 world_position,
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e4 = weft_frame.camera_position;
+    metal::float3 _e7 = weft_safe_normalize_k8_(_e4.xyz - world_position);
+    return _e7;
+}
+
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_view_direction_k2_(world_position_1, weft_frame);
+    metal::float3 _e3 = weft_safe_normalize(world_normal, _e2);
+    return WeftSurface {_e2, _e3};
+}
+
+WeftLightGeometry weft_main_light_geometry(
+    metal::float3 n_2,
+    metal::float3 v_3
+) {
+    metal::float3 _e4 = weft_safe_normalize(metal::float3(-0.61984503, 0.54986256, 0.55986005) + v_3, n_2);
+    float _e6 = weft_clamp_cos(metal::dot(n_2, v_3));
+    return WeftLightGeometry {metal::float3(-0.61984503, 0.54986256, 0.55986005), _e4, _e6, metal::saturate(metal::dot(n_2, metal::float3(-0.61984503, 0.54986256, 0.55986005))), metal::saturate(metal::dot(n_2, _e4)), metal::saturate(metal::dot(v_3, _e4))};
+}
+
+metal::float3 weft_safe_normalize_k3_(
+    metal::float3 v_4
+) {
+    float len2_2 = metal::dot(v_4, v_4);
+    return (len2_2 > 0.00000000000000000001) ? (v_4 * metal::rsqrt(metal::max(len2_2, 0.00000000000000000001))) : metal::float3(0.0);
+}
+
+WeftVaryings weft_forward_vertex(
+    WeftVertexInput in_2,
+    constant WeftFrame& weft_frame,
+    constant WeftObject& weft_object
+) {
+    WeftVaryings out = {};
+    metal::float4x4 model = weft_object.model;
+    metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    metal::float4x4 nm = weft_object.normal_matrix;
+    metal::float3x3 normal3_ = metal::float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    metal::float4 world = model * metal::float4(in_2.position, 1.0);
+    float mirror = (metal::determinant(model3_) < 0.0) ? -1.0 : 1.0;
+    float bitangent_sign = ((in_2.tangent.w < 0.0) ? -1.0 : 1.0) * mirror;
+    metal::float4x4 _e43 = weft_frame.view_proj;
+    out.clip_position = _e43 * metal::float4(world.xyz, 1.0);
+    out.world_position = world.xyz;
+    metal::float3 _e53 = weft_safe_normalize_k3_(normal3_ * in_2.normal);
+    out.world_normal = _e53;
+    metal::float3 _e58 = weft_safe_normalize_k3_(model3_ * in_2.tangent.xyz);
+    out.world_tangent = metal::float4(_e58, bitangent_sign);
+    out.uv0_ = in_2.uv0_;
+    WeftVaryings _e62 = out;
+    return _e62;
+}
+
+float weft_sheen_albedo_scaling_view(
+    metal::float3 sheen_color,
+    float e_v
+) {
+    float _e2 = weft_max3_(sheen_color);
+    return metal::saturate(1.0 - (metal::saturate(_e2) * metal::saturate(e_v)));
+}
+
+float weft_sheen_albedo_k9_(
+    float n_dot_x,
+    metal::sampler weft_lut_sampler,
+    metal::texture2d<float, metal::access::sample> weft_sheen_lut
+) {
+    metal::float2 uv = metal::float2(metal::saturate(n_dot_x), 0.1225);
+    metal::float4 _e8 = weft_sheen_lut.sample(weft_lut_sampler, uv, metal::level(0.0));
+    return metal::saturate(_e8.x);
+}
+
+float weft_d_charlie_k12_(
+    float n_dot_h
+) {
+    float noh = metal::saturate(n_dot_h);
+    float sin2_ = metal::max((1.0 - noh) * (1.0 + noh), 0.0);
+    return (10.163265 * metal::pow(sin2_, 4.0816326)) * 0.15915494;
+}
+
+float weft_sheen_l_k16_(
+    float x
+) {
+    return ((24.455767 / (1.0 + (3.4406166 * metal::pow(metal::max(x, 0.0), 0.1749604)))) + (-1.4357697 * x)) + -4.7356734;
+}
+
+float weft_sheen_lambda_one_exp_k15_(
+    float cos_theta
+) {
+    float _e2 = weft_clamp_cos(cos_theta);
+    bool low = _e2 < 0.5;
+    float _e8 = weft_sheen_l_k16_(low ? _e2 : (1.0 - _e2));
+    return metal::exp(low ? _e8 : (1.1767559 - _e8));
+}
+
+float weft_v_charlie_k13_(
+    float n_dot_v,
+    float n_dot_l
+) {
+    float _e4 = weft_clamp_cos(n_dot_v);
+    float _e5 = weft_clamp_cos(n_dot_l);
+    float _e6 = weft_sheen_lambda_one_exp_k15_(_e4);
+    float _e9 = weft_sheen_lambda_one_exp_k15_(_e5);
+    float g_inv = (1.0 + _e6) + _e9;
+    return 1.0 / (((g_inv * 4.0) * _e4) * _e5);
+}
+
+metal::float3 weft_sheen_charlie_k10_(
+    metal::float3 sheen_color_1,
+    float n_dot_h_1,
+    float n_dot_v_1,
+    float n_dot_l_1
+) {
+    float _e5 = weft_d_charlie_k12_(n_dot_h_1);
+    float _e6 = weft_v_charlie_k13_(n_dot_v_1, n_dot_l_1);
+    float lobe = _e5 * _e6;
+    return metal::max(sheen_color_1, metal::float3(0.0)) * (lobe * metal::saturate(n_dot_l_1));
+}
+
+float weft_specular_mip_k14_(
+    constant WeftFrame& weft_frame
+) {
+    float _e5 = weft_frame.params.x;
+    float max_mip = metal::max(_e5 - 1.0, 0.0);
+    return 0.19774564 * max_mip;
+}
+
+metal::float3 weft_prefiltered_radiance_k11_(
+    metal::float3 dir,
+    constant WeftFrame& weft_frame,
+    metal::texturecube<float, metal::access::sample> weft_environment,
+    metal::sampler weft_environment_sampler
+) {
+    float _e4 = weft_specular_mip_k14_(weft_frame);
+    metal::float4 c_1 = weft_environment.sample(weft_environment_sampler, dir, metal::level(_e4));
+    return metal::max(c_1.xyz, metal::float3(0.0));
+}
+
+struct vs_mainInput {
+    metal::float3 position [[attribute(0)]];
+    metal::float3 normal [[attribute(1)]];
+    metal::float4 tangent [[attribute(2)]];
+    metal::float2 uv0_ [[attribute(3)]];
+};
+struct vs_mainOutput {
+    metal::float4 clip_position [[position]];
+    metal::float3 world_position [[user(loc0), center_perspective]];
+    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float4 world_tangent [[user(loc2), center_perspective]];
+    metal::float2 uv0_ [[user(loc3), center_perspective]];
+};
+vertex vs_mainOutput vs_main(
+  vs_mainInput varyings [[stage_in]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, constant WeftObject& weft_object [[buffer(2)]]
+) {
+    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent, varyings.uv0_ };
+    WeftVaryings _e1 = weft_forward_vertex(in, weft_frame, weft_object);
+    const auto _tmp = _e1;
+    return vs_mainOutput { _tmp.clip_position, _tmp.world_position, _tmp.world_normal, _tmp.world_tangent, _tmp.uv0_ };
+}
+
+
+struct fs_mainInput {
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
+    metal::float4 world_tangent [[user(loc2), center_perspective]];
+    metal::float2 uv0_ [[user(loc3), center_perspective]];
+};
+struct fs_mainOutput {
+    metal::float4 member_1 [[color(0)]];
+};
+fragment fs_mainOutput fs_main(
+  fs_mainInput varyings_1 [[stage_in]]
+, metal::float4 clip_position [[position]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
+, metal::sampler weft_environment_sampler [[sampler(0)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
+, metal::texture2d<float, metal::access::sample> weft_sheen_lut [[texture(1)]]
+, constant WeftMaterial& material [[buffer(1)]]
+) {
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
+    metal::float3 n = {};
+    metal::float3 color = {};
+    metal::float3 sheen = {};
+    float scaling = {};
+    WeftSurface _e11 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
+    metal::float3 v_5 = _e11.v;
+    n = _e11.n;
+    metal::float3 _e15 = n;
+    WeftLightGeometry _e16 = weft_main_light_geometry(_e15, v_5);
+    float l_dot_h = metal::saturate(metal::dot(_e16.l, _e16.h));
+    metal::float3 _e24 = n;
+    metal::float3 _e25 = weft_sh_irradiance(_e24);
+    {
+        metal::float4 _e29 = material.scatter_color;
+        metal::float3 sheen_color_2 = metal::saturate(metal::float3(0.04, 0.04, 0.04) + metal::max(_e29.xyz, metal::float3(0.0)));
+        float _e37 = weft_sheen_albedo_k9_(_e16.n_dot_v, weft_lut_sampler, weft_sheen_lut);
+        float _e38 = weft_sheen_albedo_scaling_view(sheen_color_2, _e37);
+        {
+            metal::float3 _e44 = weft_sheen_charlie_k10_(sheen_color_2, _e16.n_dot_h, _e16.n_dot_v, _e16.n_dot_l);
+            sheen = _e44;
+            scaling = _e38;
+        }
+        float _e46 = scaling;
+        metal::float3 base_direct = metal::float3(0.015915554, 0.038197216, 0.095493145) * (_e46 * _e16.n_dot_l);
+        metal::float3 _e50 = sheen;
+        metal::float3 direct = (_e50 + base_direct) * metal::float3(3.0, 2.8799999, 2.6999998);
+        metal::float3 _e54 = n;
+        metal::float3 _e56 = weft_prefiltered_radiance_k11_(metal::reflect(-(v_5), _e54), weft_frame, weft_environment, weft_environment_sampler);
+        metal::float3 env_sheen = (_e56 * sheen_color_2) * _e37;
+        color = (direct + ((_e25 * metal::float3(0.050000187, 0.120000094, 0.30000058)) * _e38)) + env_sheen;
+    }
+    metal::float3 _e63 = color;
+    metal::float3 radiance = metal::clamp(_e63, metal::float3(0.0), metal::float3(65504.0));
+    return fs_mainOutput { metal::float4(radiance, 1.0) };
+}
