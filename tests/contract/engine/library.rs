@@ -379,7 +379,8 @@ pub fn queue_order(passes: &[Pass]) -> Vec<usize> {
 /// What group 0 carries for a scene: its shaders were specialised for
 /// `features`, and a feature that is off is bound black (cube), zero (SH)
 /// or dark (light); the scene's own `light`, when it names one, replaces
-/// the frame's (its direction normalised, as the engine interface wants).
+/// the frame's (its direction normalised, as the engine interface wants),
+/// and so does its `static_lighting.sh`.
 pub fn scene_world(
     meta: &SceneMetadata,
     env: &super::data::Environment,
@@ -392,10 +393,13 @@ pub fn scene_world(
     } else {
         black.clone()
     };
-    e.sh = if features.sh_ambient {
-        env.sh
-    } else {
-        black.sh
+    // A scene with static lighting (scene schema 3.7) holds its SH as
+    // constants: the frame carries the same (docs/engine-interface.md).
+    let stated_sh = meta.static_lighting.as_ref().and_then(|s| s.sh);
+    e.sh = match (features.sh_ambient, stated_sh) {
+        (true, Some(sh)) => sh.map(|rgb| rgb.map(|c| c as f32)),
+        (true, None) => env.sh,
+        (false, _) => black.sh,
     };
     let mut f = frame.clone();
     // Scene schema 3.3 states the light weft draws with, defaults included:
