@@ -548,7 +548,7 @@ enum TierMesh<'a> {
 /// The camera `weft preview --mesh` frames a mesh with (`Scene::framing`),
 /// as scene metadata states it.
 fn framing_camera(data: &weft_meta::mesh::MeshData) -> SceneCamera {
-    let camera = Scene::framing(weft_render::mesh_from_data(data.clone())).camera;
+    let camera = Scene::framing(data.clone()).camera;
     SceneCamera {
         position: camera.eye.map(f64::from),
         target: camera.target.map(f64::from),

@@ -250,7 +250,7 @@ fn gltf_mesh(spec: &str) -> Result<weft_render::Mesh, String> {
     for g in &mesh.generated {
         eprintln!("note: {}: weft generated {g}", file);
     }
-    Ok(weft_render::mesh_from_data(mesh.data()))
+    Ok(mesh.data())
 }
 
 /// Size, light, format and language from the arguments (both modes).

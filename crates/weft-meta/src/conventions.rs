@@ -41,7 +41,7 @@ pub const MIP_CHAINS: &str = "A texture parameter's image (`texture.file`) holds
      baked tables have one level.";
 
 /// The tangent-frame convention (`weft_tangent_frame` in
-/// materials/lib/forward.wgsl, the built-in meshes, `Mesh::compute_tangents`).
+/// materials/lib/forward.wgsl, the built-in meshes, `weft_runtime::mesh::compute_tangents`).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct TangentFrame {

@@ -36,15 +36,22 @@ pub fn mesh_path(name: &str) -> String {
     format!("meshes/{name}.mesh")
 }
 
-/// A built-in mesh's vertex streams and indices, as the file holds them.
+/// A triangle mesh: the engine interface's six vertex streams and the
+/// indices, as a mesh file holds them. One type for every mesh weft reads,
+/// draws and writes (`weft_runtime::Mesh` is this type, with the generated
+/// meshes beside it; the glTF front end fills it). A file holds every stream;
+/// a mesh being drawn may leave `uv1` (read as uv0) and `colors` (white)
+/// empty.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct MeshData {
     pub positions: Vec<[f32; 3]>,
     pub normals: Vec<[f32; 3]>,
+    /// xyz: unit tangent along increasing u; w: bitangent sign (+1 or -1).
     pub tangents: Vec<[f32; 4]>,
     pub uv0: Vec<[f32; 2]>,
     pub uv1: Vec<[f32; 2]>,
     pub colors: Vec<[f32; 4]>,
+    /// A triangle list, counter-clockwise fronts.
     pub indices: Vec<u32>,
 }
 

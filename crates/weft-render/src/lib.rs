@@ -47,6 +47,7 @@ use weft_runtime::image;
 use weft_runtime::luts;
 use weft_runtime::material;
 pub use weft_runtime::math;
+pub use weft_runtime::mesh;
 mod mesh_files;
 mod meta_wgpu;
 mod pipelines;
@@ -75,7 +76,7 @@ pub use gpu::{ADAPTER_VARIABLE, AdapterChoice, Gpu};
 pub use image::{HdrImage, MAX_TEXTURE_SIZE, Tonemap, decode_png, encode_png, encode_srgb};
 pub use luts::{BrdfLut, Luts, SHEEN_LUT_FILE, SPLIT_SUM_LUT_FILE, SheenLut};
 pub use material::{Material, ResolvedVariant};
-pub use mesh_files::{builtin_mesh_files, mesh_data, mesh_from_data};
+pub use mesh_files::{builtin_mesh_files, mesh_data};
 pub use preview::{MaterialOptions, PreviewOptions, render_preview, render_scene_preview};
 pub use renderer::{
     Background, ColorFormat, PreparedMaterial, RenderOptions, Renderer, ShaderLanguage, Tile,

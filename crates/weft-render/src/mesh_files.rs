@@ -21,19 +21,6 @@ fn floats<const N: usize>(bytes: &[u8]) -> Vec<[f32; N]> {
         .collect()
 }
 
-/// A mesh file's streams as a mesh to draw (every stream present).
-pub fn mesh_from_data(data: MeshData) -> Mesh {
-    Mesh {
-        positions: data.positions,
-        normals: data.normals,
-        tangents: data.tangents,
-        uv0: data.uv0,
-        uv1: data.uv1,
-        colors: data.colors,
-        indices: data.indices,
-    }
-}
-
 /// A scene's mesh file (`meshes[name].file`, relative to the scene
 /// folder `dir`): read, bounded, checked (indices in range).
 pub fn read_scene_mesh(dir: &std::path::Path, file: &str) -> Result<Mesh> {
@@ -49,7 +36,7 @@ pub fn read_scene_mesh(dir: &std::path::Path, file: &str) -> Result<Mesh> {
             path.display()
         )));
     }
-    Ok(mesh_from_data(data))
+    Ok(data)
 }
 
 /// A mesh's streams as the renderer uploads them, one per engine-interface

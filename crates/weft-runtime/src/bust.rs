@@ -1,11 +1,11 @@
 //! The character bust (issue 12's test asset): a head with face UVs, two
 //! eyes, a cap of hair cards and shoulders, generated procedurally and
 //! deterministically. Each part is its own mesh (`bust_parts`), so a scene can
-//! give each a material; `Mesh::bust` joins them for a one-material preview.
+//! give each a material; `whole_bust` joins them for a one-material preview.
 //!
 //! Conventions, as in `scene.rs` (+Y up, the face looks along +Z, counter-
 //! clockwise front faces). Every part is a surface over (θ from +Y, φ from
-//! +Z towards +X), so rows run down and columns east like `Mesh::uv_sphere`:
+//! +Z towards +X), so rows run down and columns east like `mesh::uv_sphere`:
 //! - head: u = 0.5 + φ/π, v = θ/π — the front half of the head spans u in
 //!   [0, 1] from the right ear (the character's) to the left, v from the
 //!   crown to the chin, so a face map (an SDF threshold map, a face texture)
@@ -19,7 +19,7 @@
 //! - shoulders: v = θ/π, u = φ/2π.
 
 use crate::math;
-use crate::mesh::Mesh;
+use crate::mesh::{Mesh, compute_normals, compute_tangents};
 use std::f32::consts::PI;
 
 /// The bust's parts, in draw order.
@@ -125,8 +125,8 @@ fn surface(
         .copied()
         .collect();
     m.indices = indices;
-    m.compute_normals();
-    m.compute_tangents();
+    compute_normals(&mut m);
+    compute_tangents(&mut m);
     m
 }
 
@@ -279,15 +279,13 @@ pub fn bust_parts() -> Vec<(BustPart, Mesh)> {
     ]
 }
 
-impl Mesh {
-    /// The whole bust as one mesh (every part), for a one-material preview.
-    pub fn bust() -> Mesh {
-        let mut m = Mesh::default();
-        for (_, part) in bust_parts() {
-            append(&mut m, &part);
-        }
-        m
+/// The whole bust as one mesh (every part), for a one-material preview.
+pub fn whole_bust() -> Mesh {
+    let mut m = Mesh::default();
+    for (_, part) in bust_parts() {
+        append(&mut m, &part);
     }
+    m
 }
 
 #[cfg(test)]
@@ -326,7 +324,7 @@ mod tests {
 
     #[test]
     fn streams_are_complete_finite_and_unit() {
-        let m = Mesh::bust();
+        let m = whole_bust();
         let n = m.vertex_count();
         assert!(n > 10_000);
         assert_eq!(
@@ -345,7 +343,7 @@ mod tests {
         }
         assert!(m.uv0.iter().flatten().all(|x| x.is_finite()));
         // Deterministic: the same bytes every time.
-        assert_eq!(Mesh::bust(), m);
+        assert_eq!(whole_bust(), m);
     }
 
     #[test]

@@ -33,6 +33,7 @@ pub mod values;
 
 pub use bust::{
     BustPart, EYE_CENTRES, EYE_RADIUS, HAIR_END, HEAD_CENTRE, HEAD_JAW, HEAD_RADII, bust_parts,
+    whole_bust,
 };
 pub use environment::{
     CubeLevel, EnvironmentMaps, MipRoughness, SkyParams, cube_direction, cube_face_uv, project_sh,

@@ -8,8 +8,9 @@
 //! colour 5); the bitangent is `cross(normal, tangent.xyz) * tangent.w` and
 //! points along increasing v.
 
-use crate::bust::{BustPart, bust_parts};
+use crate::bust::{BustPart, bust_parts, whole_bust};
 use crate::math::{self, Mat4, Vec3};
+use crate::mesh;
 pub use crate::mesh::Mesh;
 
 /// A look-at perspective camera.
@@ -156,7 +157,7 @@ impl Scene {
     /// The unit sphere filling most of the frame; corners show the sky.
     pub fn sphere() -> Scene {
         Scene {
-            mesh: Mesh::uv_sphere(96, 48),
+            mesh: mesh::uv_sphere(96, 48),
             model: math::IDENTITY,
             camera: Camera {
                 eye: [0.0, 0.55, 3.75],
@@ -173,7 +174,7 @@ impl Scene {
     /// The draped cloth seen from above at an angle.
     pub fn cloth() -> Scene {
         Scene {
-            mesh: Mesh::cloth(96),
+            mesh: mesh::cloth(96),
             model: math::IDENTITY,
             camera: Camera {
                 eye: [0.0, 1.55, 2.55],
@@ -190,7 +191,7 @@ impl Scene {
     /// The flat swatch facing the camera, filling the frame's centre.
     pub fn swatch() -> Scene {
         Scene {
-            mesh: Mesh::swatch(),
+            mesh: mesh::swatch(),
             model: math::IDENTITY,
             camera: Camera {
                 eye: [0.0, 0.0, 3.4],
@@ -222,7 +223,7 @@ impl Scene {
     /// The character bust, three-quarter height, face towards the camera.
     pub fn bust() -> Scene {
         Scene {
-            mesh: Mesh::bust(),
+            mesh: whole_bust(),
             model: math::IDENTITY,
             camera: Camera {
                 eye: [0.0, 0.55, 4.4],
@@ -259,9 +260,9 @@ mod tests {
 
     #[test]
     fn sphere_tangents_match_uv_derived_ones() {
-        let analytic = Mesh::uv_sphere(32, 16);
+        let analytic = mesh::uv_sphere(32, 16);
         let mut derived = analytic.clone();
-        derived.compute_tangents();
+        mesh::compute_tangents(&mut derived);
         let mut checked = 0;
         for (i, (a, d)) in analytic.tangents.iter().zip(&derived.tangents).enumerate() {
             let y = analytic.positions[i][1];
@@ -283,19 +284,19 @@ mod tests {
 
     #[test]
     fn triangles_face_outwards() {
-        let s = Mesh::uv_sphere(16, 8);
+        let s = mesh::uv_sphere(16, 8);
         for t in s.indices.chunks_exact(3) {
             let [a, b, c] = [t[0], t[1], t[2]].map(|i| s.positions[i as usize]);
             let n = math::cross(math::sub(b, a), math::sub(c, a));
             let centre = math::scale(math::add(math::add(a, b), c), 1.0 / 3.0);
             assert!(math::dot(n, centre) > 0.0);
         }
-        let c = Mesh::cloth(8);
+        let c = mesh::cloth(8);
         for t in c.indices.chunks_exact(3) {
             let [a, b, cc] = [t[0], t[1], t[2]].map(|i| c.positions[i as usize]);
             assert!(math::cross(math::sub(b, a), math::sub(cc, a))[1] > 0.0);
         }
-        let q = Mesh::swatch();
+        let q = mesh::swatch();
         assert_eq!(q.tangents[0], [1.0, 0.0, 0.0, -1.0]);
     }
 

@@ -250,7 +250,7 @@ pub fn large(triangles: usize, objects: usize, materials: usize) -> Vec<u8> {
     let per = triangles / objects;
     // cloth(res) has 2 res² triangles.
     let res = ((per as f64 / 2.0).sqrt().round() as u32).max(2);
-    let cloth = Mesh::cloth(res);
+    let cloth = weft_render::mesh::cloth(res);
     let mut packed = Packed {
         bin: Vec::new(),
         views: Vec::new(),
