@@ -19,7 +19,7 @@
 //! - shoulders: v = θ/π, u = φ/2π.
 
 use crate::math;
-use crate::mesh::{Mesh, compute_normals, compute_tangents};
+use crate::mesh::{Mesh, compute_normals, compute_tangents, grid_indices};
 use std::f32::consts::PI;
 
 /// The bust's parts, in draw order.
@@ -100,14 +100,7 @@ fn surface(
             m.uv0.push(uv);
         }
     }
-    let stride = columns + 1;
-    for r in 0..rows {
-        for c in 0..columns {
-            let a = r * stride + c;
-            let b = a + stride;
-            m.indices.extend([a, b, a + 1, a + 1, b, b + 1]);
-        }
-    }
+    m.indices = grid_indices(rows, columns);
     // Triangles collapsed at a pole have no area; drop them so that they
     // neither weigh on the normals nor reach the rasteriser.
     let positions = m.positions.clone();

@@ -82,15 +82,8 @@ pub fn cloth(res: u32) -> Mesh {
             m.uv0.push([u * 2.0, v * 2.0]);
         }
     }
-    let stride = res + 1;
-    for j in 0..res {
-        for i in 0..res {
-            let a = j * stride + i;
-            let b = a + stride;
-            // Seen from above (+Y): x right, z towards the viewer.
-            m.indices.extend([a, b, a + 1, a + 1, b, b + 1]);
-        }
-    }
+    // Seen from above (+Y): x right, z towards the viewer.
+    m.indices = grid_indices(res, res);
     compute_normals(&mut m);
     compute_tangents(&mut m);
     m
@@ -112,6 +105,22 @@ pub fn swatch() -> Mesh {
     };
     compute_tangents(&mut m);
     m
+}
+
+/// The triangles of a grid of `rows` x `columns` quads whose vertices run
+/// row by row (`columns + 1` to a row): quad (r, c) with a = its top-left
+/// vertex and b the one below is a, b, a+1 and a+1, b, b+1.
+pub(crate) fn grid_indices(rows: u32, columns: u32) -> Vec<u32> {
+    let stride = columns + 1;
+    let mut indices = Vec::with_capacity(rows as usize * columns as usize * 6);
+    for r in 0..rows {
+        for c in 0..columns {
+            let a = r * stride + c;
+            let b = a + stride;
+            indices.extend([a, b, a + 1, a + 1, b, b + 1]);
+        }
+    }
+    indices
 }
 
 /// Area-weighted vertex normals from the triangles.
