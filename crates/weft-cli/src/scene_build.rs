@@ -158,6 +158,16 @@ pub fn build_scene_command(args: &SceneBuild, quiet: bool, color: Color) -> bool
         if let Some(f) = &result.metadata.funnel {
             println!("{}", describe_funnel(f));
         }
+        if let Some(fixed) = &result.metadata.static_lighting {
+            let what = if fixed.sh.is_some() {
+                "light and SH"
+            } else {
+                "light"
+            };
+            println!(
+                "static lighting: the scene's {what} folded into every shader (the frame's are not read)"
+            );
+        }
         println!(
             "built scene `{}`: {} instance(s), {} shader(s), {} file(s) into {} in {:.2}s",
             result.name,
