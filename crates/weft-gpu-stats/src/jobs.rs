@@ -86,6 +86,17 @@ fn material_jobs(
     sel: &Selection,
     jobs: &mut Vec<Job>,
 ) -> Result<()> {
+    // A selected alias (a scene's generic variant may be one) selects the
+    // variant whose files it shares, which `pairing` pairs it with.
+    let selected: Option<Vec<&str>> = sel.variants.as_ref().map(|v| {
+        v.iter()
+            .filter(|(m, _)| m == name)
+            .map(|(_, id)| {
+                meta.resolve_variant(id)
+                    .map_or(id.as_str(), |c| c.id.as_str())
+            })
+            .collect()
+    });
     for variant in &meta.variants {
         // An alias shares its target's files: compiling it again would repeat a row.
         let Some(shader) = variant
@@ -99,10 +110,9 @@ fn material_jobs(
             .tiers
             .as_ref()
             .is_some_and(|t| !t.contains(&variant.tier))
-            || sel
-                .variants
+            || selected
                 .as_ref()
-                .is_some_and(|v| !v.iter().any(|(m, id)| m == name && *id == variant.id))
+                .is_some_and(|ids| !ids.contains(&variant.id.as_str()))
         {
             continue;
         }
