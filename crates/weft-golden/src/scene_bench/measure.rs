@@ -231,16 +231,28 @@ fn time_builds(
     ))
 }
 
-/// Whether `dir` holds exactly `files` (keyed `<scene>/<file>`).
-fn same_files(dir: &Path, files: &BTreeMap<String, Vec<u8>>) -> Result<bool, String> {
-    let on_disk = std::fs::read_dir(dir)
-        .map_err(|e| format!("{}: {e}", dir.display()))?
-        .count();
-    if on_disk != files.len() {
+/// Whether `dir` holds exactly `files` (keyed `<scene>/<path>`, where a
+/// path may name a subfolder: a ramp's `face/…`, a glTF scene's `meshes/…`).
+pub(super) fn same_files(dir: &Path, files: &BTreeMap<String, Vec<u8>>) -> Result<bool, String> {
+    if count_files(dir)? != files.len() {
         return Ok(false);
     }
     Ok(files.iter().all(|(name, bytes)| {
-        let file = name.rsplit('/').next().unwrap_or(name);
-        std::fs::read(dir.join(file)).is_ok_and(|b| &b == bytes)
+        let path = name.split_once('/').map_or(name.as_str(), |(_, p)| p);
+        std::fs::read(dir.join(path)).is_ok_and(|b| &b == bytes)
     }))
+}
+
+/// The files under `dir`, its subfolders' included.
+fn count_files(dir: &Path) -> Result<usize, String> {
+    let mut n = 0;
+    for entry in std::fs::read_dir(dir).map_err(|e| format!("{}: {e}", dir.display()))? {
+        let path = entry.map_err(|e| format!("{}: {e}", dir.display()))?.path();
+        n += if path.is_dir() {
+            count_files(&path)?
+        } else {
+            1
+        };
+    }
+    Ok(n)
 }

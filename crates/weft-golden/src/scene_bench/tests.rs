@@ -206,3 +206,23 @@ fn a_scene_input_is_named_after_its_manifest() {
     };
     assert_eq!(input.name(), "fitting_room");
 }
+
+/// "generated/ matches a fresh build" reads the scene folder whole: files in
+/// its subfolders (a ramp's `face/…`) count and are compared, so a scene with
+/// one is not reported stale, and a changed or missing file still is.
+#[test]
+fn a_scene_folder_with_subfolders_matches_its_build() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::create_dir_all(dir.path().join("face")).unwrap();
+    std::fs::write(dir.path().join("s.scene.json"), b"{}").unwrap();
+    std::fs::write(dir.path().join("face/ramp.png"), b"png").unwrap();
+    let mut files = std::collections::BTreeMap::from([
+        ("s/s.scene.json".to_string(), b"{}".to_vec()),
+        ("s/face/ramp.png".to_string(), b"png".to_vec()),
+    ]);
+    assert!(measure::same_files(dir.path(), &files).unwrap());
+    files.insert("s/face/ramp.png".into(), b"other".to_vec());
+    assert!(!measure::same_files(dir.path(), &files).unwrap());
+    files.remove("s/face/ramp.png");
+    assert!(!measure::same_files(dir.path(), &files).unwrap());
+}
