@@ -27,16 +27,9 @@ pub fn read_scene_mesh(dir: &std::path::Path, file: &str) -> Result<Mesh> {
     let path = dir.join(file);
     let bytes = weft_meta::files::read_regular(&path, weft_meta::files::MAX_BINARY_BYTES)
         .map_err(|e| Error::Metadata(format!("mesh file `{}`: {e}", path.display())))?;
-    let data = MeshData::from_bytes(&bytes)
-        .map_err(|e| Error::Metadata(format!("mesh file `{}`: {e}", path.display())))?;
-    let n = data.positions.len();
-    if let Some(bad) = data.indices.iter().find(|&&i| i as usize >= n) {
-        return Err(Error::Metadata(format!(
-            "mesh file `{}`: index {bad} is out of range ({n} vertices)",
-            path.display()
-        )));
-    }
-    Ok(data)
+    // `from_bytes` checks the header, the lengths and every index.
+    MeshData::from_bytes(&bytes)
+        .map_err(|e| Error::Metadata(format!("mesh file `{}`: {e}", path.display())))
 }
 
 /// A mesh's streams as the renderer uploads them, one per engine-interface

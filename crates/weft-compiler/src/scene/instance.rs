@@ -73,10 +73,7 @@ pub fn static_lighting_members(manifest: &SceneManifest) -> BTreeMap<String, Con
     let Some(fixed) = &manifest.static_lighting else {
         return out;
     };
-    let light = weft_meta::scene::SceneLight::with_defaults(
-        manifest.light.as_ref().map(|l| l.direction),
-        manifest.light.as_ref().and_then(|l| l.color),
-    );
+    let light = manifest.light_used();
     let d = light.direction.map(|c| c as f32);
     let length = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
     let unit = d.map(|c| c * (1.0 / length));

@@ -13,8 +13,8 @@ use weft_front::model::{Material, ParamValue};
 use weft_front::scene::model::{InstanceMesh, ResolvedInstance, ResolvedScene};
 use weft_front::variants::VariantKey;
 use weft_meta::scene::{
-    SCENE_SCHEMA_VERSION, SceneCamera, SceneFeatures, SceneInstance, SceneLight, SceneMetadata,
-    SceneShader, SceneTexture, TierChoice,
+    SCENE_SCHEMA_VERSION, SceneCamera, SceneFeatures, SceneInstance, SceneMetadata, SceneShader,
+    SceneTexture, TierChoice,
 };
 use weft_meta::{ENGINE_INTERFACE_VERSION, ParamKind, VariantShader};
 
@@ -292,14 +292,8 @@ pub(super) fn assemble(
         },
         // Always written (schema 3.3): the light weft draws with, defaults
         // included, so an engine never has to know them.
-        light: Some(SceneLight::with_defaults(
-            manifest.light.as_ref().map(|l| l.direction),
-            manifest.light.as_ref().and_then(|l| l.color),
-        )),
-        static_lighting: manifest
-            .static_lighting
-            .as_ref()
-            .map(|s| weft_meta::scene::StaticLighting { sh: s.sh }),
+        light: Some(manifest.light_used()),
+        static_lighting: manifest.static_lighting.clone(),
         shaders,
         instances,
         languages: crate::compile::engine_binding::languages(),

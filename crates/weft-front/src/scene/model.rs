@@ -127,13 +127,9 @@ pub struct SceneLight {
 
 /// `[static_lighting]`: the scene's lighting is fixed, so the build folds
 /// it into every shader — the main light (`[light]`, or weft's default) and,
-/// with SH ambient, these coefficients (docs/scenes.md).
-#[derive(Clone, Debug, PartialEq)]
-pub struct StaticLighting {
-    /// The SH ambient's nine RGB coefficients (`weft_frame.sh[i].xyz`,
-    /// docs/engine-interface.md, "SH"); `None` when the scene has no SH ambient.
-    pub sh: Option<[[f64; 3]; 9]>,
-}
+/// with SH ambient, these coefficients (docs/scenes.md). The metadata's type:
+/// the manifest's table is what the metadata states.
+pub use weft_meta::scene::StaticLighting;
 
 #[derive(Clone, Debug, PartialEq)]
 pub struct Camera {
@@ -320,6 +316,18 @@ pub struct SceneManifest {
     pub instances: Vec<InstanceDecl>,
     /// Where the instances came from when a glTF file made them.
     pub gltf: Option<GltfSource>,
+}
+
+impl SceneManifest {
+    /// The main light the scene is drawn with: `[light]`, weft's default
+    /// light (`weft_meta::scene`) filling in what it leaves out — what the
+    /// scene metadata's `light` states and `[static_lighting]` folds.
+    pub fn light_used(&self) -> weft_meta::scene::SceneLight {
+        weft_meta::scene::SceneLight::with_defaults(
+            self.light.as_ref().map(|l| l.direction),
+            self.light.as_ref().and_then(|l| l.color),
+        )
+    }
 }
 
 /// How an instance's tier was chosen.
